@@ -1,0 +1,115 @@
+#pragma once
+/// Parameter schemas (MOOSE validParams / FEBio parameter tables): every material, interface
+/// law and solver declares its keys with type, default, range, units and a one-line doc.
+/// The same schema validates input, formats error messages and generates the docs.
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace bipot {
+
+enum class ParamType { Real, Integer, Boolean, String };
+
+/// "real", "integer", "boolean", "string".
+const char* to_string(ParamType type);
+
+/// A parameter value as given by the user or a default.
+using ParamValue = std::variant<double, long, bool, std::string>;
+
+/// One key of a schema. Built fluently: `schema.real("youngs_modulus", "kPa", "...").positive()`.
+struct ParamSpec {
+  std::string name;
+  ParamType type = ParamType::Real;
+  std::string units; ///< "" for dimensionless
+  std::string doc;
+  bool required = true;
+  std::optional<ParamValue> default_value;
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  bool lower_open = true; ///< the bound itself is excluded (always true for an infinite bound)
+  bool upper_open = true;
+  std::vector<std::string> choices; ///< allowed strings, empty = any
+
+  ParamSpec& with_default(ParamValue v);
+  ParamSpec& positive();                   ///< (0, inf)
+  ParamSpec& non_negative();               ///< [0, inf)
+  ParamSpec& at_least(double v);           ///< [v, ...
+  ParamSpec& greater_than(double v);       ///< (v, ...
+  ParamSpec& at_most(double v);            ///< ..., v]
+  ParamSpec& less_than(double v);          ///< ..., v)
+  ParamSpec& one_of(std::vector<std::string> allowed);
+
+  /// "[0, 1]", "(0, inf)", "" when unbounded.
+  std::string range_text() const;
+  /// The problem with a value of the right type, if any, e.g.
+  /// "value -3 is out of range (0, inf) kPa". Type mismatches are the caller's business.
+  std::optional<std::string> check(const ParamValue& value) const;
+  /// "real, required, (0, inf) kPa: Young's modulus" — one line for --describe and docs.
+  std::string summary() const;
+};
+
+/// The ordered list of keys a named object accepts.
+class ParamSchema {
+public:
+  ParamSchema() = default;
+  ParamSchema(std::string name, std::string doc) : name_(std::move(name)), doc_(std::move(doc)) {}
+
+  const std::string& name() const { return name_; }
+  const std::string& doc() const { return doc_; }
+  const std::vector<ParamSpec>& specs() const { return specs_; }
+  std::vector<std::string> keys() const;
+  const ParamSpec* find(const std::string& key) const;
+
+  ParamSpec& real(const std::string& key, const std::string& units, const std::string& doc);
+  ParamSpec& integer(const std::string& key, const std::string& doc);
+  ParamSpec& boolean(const std::string& key, const std::string& doc);
+  ParamSpec& string(const std::string& key, const std::string& doc);
+
+  /// Human-readable description: name, doc, then one line per key.
+  std::string describe() const;
+  /// A Markdown table of the keys (docs are generated from this so they cannot drift).
+  std::string markdown_table() const;
+
+private:
+  ParamSpec& add(ParamSpec spec);
+  std::string name_;
+  std::string doc_;
+  std::vector<ParamSpec> specs_;
+};
+
+/// Validated parameter values by key. Typed getters throw bipot::Error on a missing key or
+/// wrong type (a programming error once validation passed).
+class ParameterSet {
+public:
+  void set(const std::string& key, ParamValue value) { values_[key] = std::move(value); }
+  bool has(const std::string& key) const { return values_.count(key) != 0; }
+  double real(const std::string& key) const;
+  long integer(const std::string& key) const;
+  bool boolean(const std::string& key) const;
+  const std::string& string(const std::string& key) const;
+  const std::map<std::string, ParamValue>& values() const { return values_; }
+
+private:
+  const ParamValue& at(const std::string& key) const;
+  std::map<std::string, ParamValue> values_;
+};
+
+/// One problem found by validate(): the key it concerns and a message.
+struct ParamProblem {
+  std::string key;
+  std::string message;
+};
+
+/// Checks `given` against `schema` (unknown keys with the nearest valid one, missing required
+/// keys with their doc, wrong types, out-of-range values) and fills in defaults.
+/// An integer given where a real is expected is accepted and converted.
+std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& given);
+
+/// Formats a value for messages ("1e+30", "true", "\"abc\"").
+std::string format_value(const ParamValue& value);
+
+} // namespace bipot
