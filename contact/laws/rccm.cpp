@@ -1,0 +1,116 @@
+#include "contact/laws/rccm.hpp"
+
+#include "fem/core/error.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+namespace bipot::contact {
+
+ParamSchema Rccm::schema() {
+  ParamSchema s("rccm", "RCCM interface: unilateral contact, Coulomb friction and adhesion "
+                        "(Raous, Cangemi, Cocu 1999)");
+  s.real("normal_stiffness", "kN/m^3", "initial normal stiffness C_n of the sound interface")
+      .positive();
+  s.real("tangential_stiffness", "kN/m^3",
+         "initial tangential stiffness C_t of the sound interface")
+      .positive();
+  s.real("decohesion_energy", "kJ/m^2", "decohesion energy w, dissipated per area by debonding")
+      .positive();
+  s.real("friction_coefficient", "",
+         "Coulomb friction coefficient mu once debonded (mu_bar = mu (1 - beta))")
+      .non_negative()
+      .with_default(0.0);
+  s.real("adhesion_viscosity", "kN*s/m", "adhesion viscosity alpha (0 = quasi-static limit)")
+      .non_negative()
+      .with_default(0.0);
+  s.real("initial_adhesion", "", "initial adhesion intensity beta0 (1 = sound, 0 = debonded)")
+      .at_least(0.0)
+      .at_most(1.0)
+      .with_default(1.0);
+  return s;
+}
+
+Rccm::Rccm(const ParameterSet& params)
+    : Rccm(params.real("normal_stiffness"), params.real("tangential_stiffness"),
+           params.real("decohesion_energy"), params.real("friction_coefficient"),
+           params.real("adhesion_viscosity"), params.real("initial_adhesion")) {}
+
+Rccm::Rccm(double normal_stiffness, double tangential_stiffness, double decohesion_energy,
+           double friction_coefficient, double adhesion_viscosity, double initial_adhesion)
+    : cn_(normal_stiffness), ct_(tangential_stiffness), w_(decohesion_energy),
+      mu_(friction_coefficient), alpha_(adhesion_viscosity), beta0_(initial_adhesion) {
+  // The schema's own checks, so a direct construction reports exactly what the input would.
+  ParameterSet given;
+  given.set("normal_stiffness", cn_);
+  given.set("tangential_stiffness", ct_);
+  given.set("decohesion_energy", w_);
+  given.set("friction_coefficient", mu_);
+  given.set("adhesion_viscosity", alpha_);
+  given.set("initial_adhesion", beta0_);
+  const auto problems = validate(schema(), given);
+  if (!problems.empty()) {
+    std::vector<std::string> lines;
+    for (const auto& p : problems)
+      lines.push_back("rccm." + p.key + ": " + p.message);
+    throw InputError(lines);
+  }
+}
+
+double Rccm::update_adhesion(double beta_old, const LocalVector& jump, double dtau,
+                             LocalVector* dbeta_djump) const {
+  const Eigen::Index d = jump.size();
+  assert((d == 2 || d == 3) && beta_old >= 0.0 && beta_old <= 1.0 && dtau >= 0.0);
+  const double g_n_plus = std::max(jump(0), 0.0);
+  const double energy = cn_ * g_n_plus * g_n_plus + ct_ * jump.tail(d - 1).squaredNorm();
+  if (dbeta_djump) *dbeta_djump = LocalVector::Zero(d);
+
+  double beta = beta_old;
+  double dbeta_denergy = 0.0;
+  if (alpha_ > 0.0) {
+    const double h = dtau / alpha_;
+    const double candidate = (beta_old + w_ * h) / (1.0 + energy * h);
+    if (candidate < beta_old) {
+      beta = candidate;
+      dbeta_denergy = -candidate * h / (1.0 + energy * h);
+    }
+  } else if (energy * beta_old > w_) { // w/E < β_old without dividing by E = 0
+    beta = w_ / energy;
+    dbeta_denergy = -beta / energy;
+  }
+  if (dbeta_djump && dbeta_denergy != 0.0) {
+    (*dbeta_djump)(0) = dbeta_denergy * 2.0 * cn_ * g_n_plus;
+    dbeta_djump->tail(d - 1) = dbeta_denergy * 2.0 * ct_ * jump.tail(d - 1);
+  }
+  return beta;
+}
+
+LocalVector Rccm::adhesive_traction(double beta, const LocalVector& jump,
+                                    LocalMatrix* dt_djump) const {
+  const Eigen::Index d = jump.size();
+  const double b2 = beta * beta;
+  LocalVector t(d);
+  t(0) = -b2 * cn_ * jump(0);
+  t.tail(d - 1) = -b2 * ct_ * jump.tail(d - 1);
+  if (dt_djump) {
+    *dt_djump = LocalMatrix::Zero(d, d);
+    (*dt_djump)(0, 0) = -b2 * cn_;
+    for (Eigen::Index i = 1; i < d; ++i)
+      (*dt_djump)(i, i) = -b2 * ct_;
+  }
+  return t;
+}
+
+LocalVector Rccm::adhesive_traction_dbeta(double beta, const LocalVector& jump) const {
+  const Eigen::Index d = jump.size();
+  LocalVector t(d);
+  t(0) = -2.0 * beta * cn_ * jump(0);
+  t.tail(d - 1) = -2.0 * beta * ct_ * jump.tail(d - 1);
+  return t;
+}
+
+double Rccm::stiffness_scale() const {
+  return std::max(cn_, ct_);
+}
+
+} // namespace bipot::contact
