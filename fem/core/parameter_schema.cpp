@@ -236,8 +236,10 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
     }
     ParamValue v = value;
     if (!type_matches(spec->type, v)) {
-      problems.push_back({key, "expected a " + std::string(to_string(spec->type)) + ", got " +
-                                   format_value(value)});
+      const char* article = spec->type == ParamType::Integer ? "an " : "a ";
+      problems.push_back(
+          {key, "expected " + std::string(article) + to_string(spec->type) + ", got " +
+                    format_value(value)});
       continue;
     }
     if (auto msg = spec->check(v)) {

@@ -1,0 +1,35 @@
+#pragma once
+/// Isotropic linear elasticity (Hooke): σ = λ tr(ε) I + 2 G ε, with
+/// λ = E ν / ((1+ν)(1−2ν)) and G = E / (2(1+ν)). In 2D (plane strain and axisymmetric) the
+/// out-of-plane / hoop component is kept as the third Voigt entry, so the same 4×4 matrix
+/// serves both kinematics (plane strain simply has ε_zz = 0).
+
+#include "fem/core/parameter_schema.hpp"
+#include "materials/material.hpp"
+
+namespace bipot {
+
+class LinearElastic : public Material {
+public:
+  /// Keys: youngs_modulus (kPa, > 0), poissons_ratio ((-1, 0.5)), unit_weight (kN/m³, ≥ 0).
+  static ParamSchema schema();
+
+  explicit LinearElastic(const ParameterSet& params);
+  LinearElastic(double youngs_modulus, double poissons_ratio, double unit_weight = 0.0);
+
+  std::string name() const override { return "linear_elastic"; }
+  void update(const Voigt& strain, const double* old_state, Voigt& stress, VoigtMatrix& tangent,
+              double* new_state) const override;
+  double unit_weight() const override { return unit_weight_; }
+  bool is_linear() const override { return true; }
+
+  /// The elasticity matrix for 2D (4×4) or 3D (6×6) Voigt strains.
+  VoigtMatrix elasticity_matrix(int voigt_size) const;
+
+private:
+  double youngs_modulus_;
+  double poissons_ratio_;
+  double unit_weight_;
+};
+
+} // namespace bipot

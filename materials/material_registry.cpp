@@ -1,0 +1,26 @@
+#include "materials/material_registry.hpp"
+
+#include "materials/linear_elastic.hpp"
+
+namespace bipot {
+
+namespace {
+template <class T> void add(Registry<Material>& r) {
+  r.add(T::schema(), [](const ParameterSet& p) { return std::make_unique<T>(p); });
+}
+} // namespace
+
+void register_materials(Registry<Material>& registry) {
+  add<LinearElastic>(registry);
+}
+
+const Registry<Material>& materials() {
+  static const Registry<Material> registry = [] {
+    Registry<Material> r("material");
+    register_materials(r);
+    return r;
+  }();
+  return registry;
+}
+
+} // namespace bipot
