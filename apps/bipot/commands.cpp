@@ -1,0 +1,183 @@
+#include "apps/bipot/commands.hpp"
+
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/result_writer.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/core/error.hpp"
+#include "fem/core/nearest_name.hpp"
+#include "fem/input/problem_reader.hpp"
+#include "fem/linalg/communicator.hpp"
+#include "fem/linalg/linear_solver.hpp"
+#include "materials/material_registry.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+namespace bipot::app {
+
+namespace {
+
+bool root() { return mpi_rank() == 0; }
+
+bool wants_help(const std::vector<std::string>& args) {
+  for (const auto& a : args)
+    if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
+// Every rank validates (so every rank fails the same way before any collective call);
+// rank 0 prints.
+int report(const std::exception& e, int code) {
+  if (!root()) return code;
+  if (auto input = dynamic_cast<const InputError*>(&e)) {
+    std::cerr << "bipot: invalid input (" << input->problems().size() << " problem"
+              << (input->problems().size() == 1 ? "" : "s") << "):\n";
+    for (const auto& p : input->problems()) std::cerr << "  " << p << "\n";
+  } else {
+    std::cerr << "bipot: " << e.what() << "\n";
+  }
+  return code;
+}
+
+template <class F> int guarded(F&& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    return report(e, 2);
+  } catch (const SolverError& e) {
+    return report(e, 3);
+  } catch (const std::exception& e) {
+    return report(e, 4);
+  }
+}
+
+std::string one_file(const std::vector<std::string>& args, const char* usage) {
+  std::vector<std::string> files;
+  for (const auto& a : args)
+    if (a.empty() || a[0] != '-') files.push_back(a);
+  if (files.size() != 1) {
+    if (root()) std::cerr << "usage: " << usage << "\n";
+    return "";
+  }
+  return files[0];
+}
+
+} // namespace
+
+void print_usage() {
+  std::cout << "bipot - finite elements with adhesive, frictional and unilateral interfaces\n\n"
+               "usage:\n"
+               "  bipot run FILE.yaml        solve the problem, results in output.directory\n"
+               "  bipot check FILE.yaml      validate the input and the mesh, solve nothing\n"
+               "  bipot describe [NAME]      parameters of a material, of linear_solver, or\n"
+               "                             'input' for the file's top-level keys\n"
+               "  bipot COMMAND --help       help on a command\n\n"
+               "Run in parallel with: mpiexec -n N bipot run FILE.yaml\n"
+               "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure, 4 other error.\n";
+}
+
+int check_command(const std::vector<std::string>& args) {
+  if (wants_help(args)) {
+    if (root())
+      std::cout << "bipot check FILE.yaml\n  Reads FILE.yaml, builds its mesh and materials and "
+                   "reports every problem as file:line:col: key.path: message.\n";
+    return 0;
+  }
+  const std::string file = one_file(args, "bipot check FILE.yaml");
+  if (file.empty()) return 1;
+  return guarded([&] {
+    const Model model = build_model(read_problem_file(file));
+    if (root())
+      std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
+                << model.mesh.num_cells() << " cells, " << model.spec.stages.size()
+                << " stage" << (model.spec.stages.size() == 1 ? "" : "s") << ")\n";
+    return 0;
+  });
+}
+
+int run_command(const std::vector<std::string>& args) {
+  if (wants_help(args)) {
+    if (root())
+      std::cout << "bipot run FILE.yaml [--quiet]\n  Solves the problem stage by stage and "
+                   "writes output.directory/solution.pvd (open it in ParaView) and "
+                   "reactions.csv.\n  Prints one progress line per converged increment unless "
+                   "--quiet.\n";
+    return 0;
+  }
+  bool quiet = false;
+  for (const auto& a : args)
+    if (a == "--quiet" || a == "-q") quiet = true;
+    else if (!a.empty() && a[0] == '-') {
+      if (root()) std::cerr << "bipot run: unknown option '" << a << "'\n";
+      return 1;
+    }
+  const std::string file = one_file(args, "bipot run FILE.yaml [--quiet]");
+  if (file.empty()) return 1;
+  return guarded([&] {
+    const Model model = build_model(read_problem_file(file));
+    ResultWriter writer(model, mpi_rank(), mpi_size());
+    StaticAnalysis analysis(model, {}, &writer);
+    if (root() && !quiet)
+      std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "
+                << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs()
+                << " DOFs on " << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
+    const RunSummary summary = analysis.run([&](const StepReport& r) {
+      if (!root() || quiet) return;
+      std::printf("  stage %-12s step %3d/%-3d  t = %-9.4g  newton %2d  linear %4d  "
+                  "residual %.2e  %.2f s\n",
+                  r.stage.c_str(), r.step, r.steps, r.time, r.iterations, r.linear_iterations,
+                  r.residual, r.seconds);
+      std::fflush(stdout);
+    });
+    if (root() && !quiet)
+      std::cout << "bipot: done, " << summary.steps << " increments, " << summary.linear_solves
+                << " linear solves in " << summary.seconds << " s\n"
+                << "bipot: results in " << writer.directory() << " (ParaView: "
+                << writer.pvd_path() << ")\n";
+    return 0;
+  });
+}
+
+int describe_command(const std::vector<std::string>& args) {
+  if (wants_help(args)) {
+    if (root())
+      std::cout << "bipot describe [NAME] [--markdown]\n  Without NAME: lists what can be "
+                   "described. With NAME: its parameters (type, default, range, units, "
+                   "meaning);\n  --markdown prints them as the table used in the docs.\n";
+    return 0;
+  }
+  if (!root()) return 0;
+  const auto& mats = materials();
+  std::vector<std::string> names;
+  bool markdown = false;
+  for (const auto& a : args)
+    if (a == "--markdown") markdown = true;
+    else names.push_back(a);
+  if (names.empty()) {
+    std::cout << "materials: " << join_names(mats.names()) << "\n"
+              << "solvers: linear_solver\n"
+              << "input file: input\n"
+              << "Use: bipot describe NAME\n";
+    return 0;
+  }
+  const std::string& name = names[0];
+  auto print = [&](const ParamSchema& s) {
+    std::cout << (markdown ? s.markdown_table() : s.describe());
+  };
+  if (mats.contains(name)) print(mats.schema(name));
+  else if (name == "linear_solver") print(LinearSolver::schema());
+  else if (name == "input") std::cout << describe_input_format();
+  else {
+    std::vector<std::string> all = mats.names();
+    all.push_back("linear_solver");
+    all.push_back("input");
+    std::string msg = "bipot describe: nothing is called '" + name + "'";
+    const auto near = nearest_name(name, all);
+    if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+    std::cerr << msg << "; available: " << join_names(all) << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace bipot::app

@@ -1,0 +1,121 @@
+#include "fem/analysis/model.hpp"
+
+#include "fem/core/error.hpp"
+
+#include <algorithm>
+#include "fem/core/nearest_name.hpp"
+#include "fem/gmsh/gmsh_reader.hpp"
+#include "fem/mesh/structured_mesh.hpp"
+#include "materials/material_registry.hpp"
+
+namespace bipot {
+
+namespace {
+
+CellType parse_cell(const std::string& name) {
+  for (CellType t : {CellType::Tri3, CellType::Tri6, CellType::Quad4, CellType::Quad8,
+                     CellType::Tet4, CellType::Hex8})
+    if (to_string(t) == name) return t;
+  throw InputError("unknown cell type '" + name + "'");
+}
+
+std::vector<std::string> keys_of(const std::map<std::string, std::vector<Index>>& m) {
+  std::vector<std::string> out;
+  for (const auto& kv : m) out.push_back(kv.first);
+  return out;
+}
+
+std::string unknown_set(const std::string& kind, const std::string& name,
+                        const std::vector<std::string>& known) {
+  std::string msg = "no " + kind + " named '" + name + "' in the mesh";
+  const auto near = nearest_name(name, known);
+  if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+  return msg + "; available: " + (known.empty() ? std::string("none") : join_names(known));
+}
+
+} // namespace
+
+Mesh build_mesh(const MeshSpec& spec, int dim) {
+  if (!spec.has_blocks) return read_gmsh(spec.file);
+  BlockMeshSpec b;
+  b.x = spec.x;
+  b.y = spec.y;
+  if (dim == 3) b.z = spec.z;
+  b.cell = parse_cell(spec.cell);
+  b.block_regions = spec.block_regions;
+  return make_block_mesh(b);
+}
+
+Model build_model(const ProblemSpec& spec) {
+  Model model;
+  model.spec = spec;
+  model.kinematics = parse_kinematics(spec.kinematics);
+  const int dim = spatial_dim(model.kinematics);
+  try {
+    model.mesh = build_mesh(spec.mesh, dim);
+  } catch (const InputError& e) {
+    std::vector<std::string> problems;
+    for (const auto& p : e.problems()) problems.push_back(spec.mesh.where + ": " + p);
+    throw InputError(problems);
+  }
+  const Mesh& mesh = model.mesh;
+  std::vector<std::string> problems;
+  if (mesh.dim != dim)
+    problems.push_back(spec.mesh.where + ": the mesh is " + std::to_string(mesh.dim) +
+                       "D but kinematics '" + spec.kinematics + "' needs " +
+                       std::to_string(dim) + "D");
+  if (model.kinematics == Kinematics::Axisymmetric) {
+    for (Index n = 0; n < mesh.num_nodes(); ++n)
+      if (mesh.nodes[n][0] < -1e-12) {
+        problems.push_back(spec.mesh.where + ": axisymmetric meshes need r = x >= 0; node " +
+                           std::to_string(n) + " has r = " + std::to_string(mesh.nodes[n][0]));
+        break;
+      }
+  }
+
+  // Materials by region.
+  std::vector<std::string> region_names;
+  int max_id = -1;
+  for (const auto& [name, id] : mesh.regions) {
+    region_names.push_back(name);
+    max_id = std::max(max_id, id);
+  }
+  model.material_of_region.assign(max_id + 1, nullptr);
+  for (const auto& m : spec.materials) {
+    auto it = mesh.regions.find(m.region);
+    if (it == mesh.regions.end()) {
+      problems.push_back(m.where + ": " + unknown_set("region", m.region, region_names));
+      continue;
+    }
+    model.materials.push_back(materials().create(m.type, m.parameters));
+    model.material_of_region[it->second] = model.materials.back().get();
+  }
+  std::vector<bool> region_used(max_id + 1, false);
+  for (int r : mesh.cell_regions) region_used[r] = true;
+  for (const auto& [name, id] : mesh.regions)
+    if (region_used[id] && !model.material_of_region[id] &&
+        std::none_of(spec.materials.begin(), spec.materials.end(),
+                     [&](const MaterialSpec& m) { return m.region == name; }))
+      problems.push_back(spec.file + ": materials: region '" + name +
+                         "' of the mesh has no material");
+
+  // Sets named by stages.
+  std::vector<std::string> facet_names;
+  for (const auto& kv : mesh.facet_sets) facet_names.push_back(kv.first);
+  const auto node_names = keys_of(mesh.node_sets);
+  for (const auto& stage : spec.stages) {
+    for (const auto& bc : stage.boundary_conditions)
+      if (!mesh.node_sets.count(bc.set) && !mesh.facet_sets.count(bc.set))
+        problems.push_back(bc.where + ": " + unknown_set("node or facet set", bc.set, node_names));
+    for (const auto& ld : stage.loads)
+      if (ld.type != LoadSpec::Type::Gravity && !mesh.facet_sets.count(ld.set))
+        problems.push_back(ld.where + ": " + unknown_set("facet set", ld.set, facet_names));
+  }
+  for (const auto& s : spec.initial_stress)
+    if (!mesh.regions.count(s.region))
+      problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
+  if (!problems.empty()) throw InputError(problems);
+  return model;
+}
+
+} // namespace bipot

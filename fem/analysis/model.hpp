@@ -1,0 +1,31 @@
+#pragma once
+/// A problem ready to solve: the validated input, its mesh and its materials.
+
+#include "fem/element/kinematics.hpp"
+#include "fem/input/problem_spec.hpp"
+#include "fem/mesh/mesh.hpp"
+#include "materials/material.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace bipot {
+
+struct Model {
+  ProblemSpec spec;
+  Kinematics kinematics = Kinematics::PlaneStrain;
+  Mesh mesh;
+  std::vector<std::unique_ptr<Material>> materials; ///< owned, one per materials entry
+  std::vector<const Material*> material_of_region;  ///< indexed by mesh region id
+};
+
+/// Builds the mesh (generator or Gmsh file) and the materials, then checks everything that
+/// needs the mesh: every region has a material and every material a region, every set named
+/// by a boundary condition or load exists (with the nearest names), axisymmetric meshes have
+/// r ≥ 0. Throws InputError listing every problem with the user's file:line:col.
+Model build_model(const ProblemSpec& spec);
+
+/// The mesh described by a MeshSpec (no checks against the rest of the input).
+Mesh build_mesh(const MeshSpec& spec, int dim);
+
+} // namespace bipot

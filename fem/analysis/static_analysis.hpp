@@ -1,0 +1,71 @@
+#pragma once
+/// Quasi-static analysis in load stages: each stage ramps its boundary conditions and loads
+/// linearly from their state at the end of the previous stage over its increments, and each
+/// increment is solved by Newton's method on R(u) = f_ext − f_int(u) = 0.
+
+#include "fem/analysis/model.hpp"
+#include "fem/assembly/dof_map.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bipot {
+
+class ResultWriter;
+
+struct AnalysisOptions {
+  int max_iterations = 25;         ///< Newton iterations per increment
+  double residual_tolerance = 1e-8; ///< relative to the first residual of the increment
+};
+
+/// What a converged increment reports (progress lines, tests).
+struct StepReport {
+  std::string stage;
+  int stage_index = 0;
+  int step = 0;          ///< increment within the stage, 1-based
+  int steps = 0;         ///< increments of the stage
+  int global_step = 0;   ///< converged increments so far, 1-based
+  double time = 0;       ///< pseudo-time at the end of the increment (s)
+  double load_factor = 0; ///< λ within the stage, in (0, 1]
+  int iterations = 0;    ///< Newton iterations
+  int linear_iterations = 0;
+  double residual = 0;   ///< final relative residual
+  double seconds = 0;    ///< wall time of the increment
+};
+
+struct RunSummary {
+  int steps = 0;
+  int linear_solves = 0;
+  int matrix_setups = 0;
+  Index num_dofs = 0;
+  double seconds = 0;
+};
+
+class StaticAnalysis {
+public:
+  /// `writer` (optional, not owned) receives every converged increment.
+  StaticAnalysis(const Model& model, AnalysisOptions options = {}, ResultWriter* writer = nullptr);
+  ~StaticAnalysis();
+
+  /// Runs every stage. Throws SolverError naming the stage, step, iteration and residual
+  /// history if an increment does not converge; increments converged before stay written.
+  RunSummary run(const std::function<void(const StepReport&)>& on_step = {});
+
+  /// Total displacement, all DOFs, replicated on every rank.
+  const std::vector<double>& displacement() const;
+  const DofMap& dofs() const;
+  /// Reaction force (f_int − f_ext) summed over the nodes of a node or facet set, one value
+  /// per spatial component, at the last converged increment.
+  std::vector<double> reaction(const std::string& set) const;
+  /// Committed cell averages of strain and stress for the cells this rank owns.
+  void cell_results(std::vector<Index>& cells, std::vector<double>& strain,
+                    std::vector<double>& stress) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace bipot

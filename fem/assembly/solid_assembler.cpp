@@ -1,0 +1,152 @@
+#include "fem/assembly/solid_assembler.hpp"
+
+#include "fem/core/error.hpp"
+#include "fem/element/quadrature.hpp"
+#include "fem/linalg/distributed_vector.hpp"
+#include "fem/linalg/sparse_matrix.hpp"
+#include "fem/linalg/sparsity_pattern.hpp"
+
+namespace bipot {
+
+SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs,
+                               std::vector<const Material*> material_of_region,
+                               std::vector<Index> owned_cells)
+    : mesh_(mesh), kin_(kin), dofs_(dofs), materials_(std::move(material_of_region)),
+      owned_cells_(std::move(owned_cells)), nv_(bipot::voigt_size(spatial_dim(kin))) {
+  qp_offset_.reserve(owned_cells_.size() + 1);
+  qp_offset_.push_back(0);
+  for (Index c : owned_cells_) {
+    const int region = mesh_.cell_regions[c];
+    if (region < 0 || region >= static_cast<int>(materials_.size()) || !materials_[region])
+      throw InputError("no material for region '" + mesh_.region_name(region) + "' (cell " +
+                       std::to_string(c) + ")");
+    qp_offset_.push_back(qp_offset_.back() + values_for(mesh_.cell_types[c]).num_points());
+  }
+  const std::size_t n = static_cast<std::size_t>(qp_offset_.back()) * nv_;
+  sigma0_.assign(n, 0.0);
+  stress_.assign(n, 0.0);
+  strain_.assign(n, 0.0);
+  trial_stress_ = stress_;
+  trial_strain_ = strain_;
+}
+
+SolidAssembler::~SolidAssembler() = default;
+
+ElementValues& SolidAssembler::values_for(CellType type) {
+  auto it = values_.find(type);
+  if (it == values_.end())
+    it = values_
+             .emplace(type, std::make_unique<ElementValues>(type, kin_,
+                                                            stiffness_degree(type, kin_)))
+             .first;
+  return *it->second;
+}
+
+void SolidAssembler::set_initial_stress(
+    const std::function<Voigt(const std::array<double, 3>&, int)>& sigma0) {
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index c = owned_cells_[k];
+    ElementValues& ev = values_for(mesh_.cell_types[c]);
+    ev.reinit(mesh_, c);
+    for (int q = 0; q < ev.num_points(); ++q) {
+      const Voigt s = sigma0(ev.point(q), mesh_.cell_regions[c]);
+      for (int i = 0; i < nv_; ++i) sigma0_[(qp_offset_[k] + q) * nv_ + i] = s(i);
+    }
+  }
+}
+
+// Runs `kernel(k, cell, ev, dofs, u_e, f_e, K_e)` after integrating the cell: f_e = f_int,e,
+// K_e = tangent (row-major), both sized num_dofs.
+template <class CellKernel>
+void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel) {
+  std::vector<Index> cell_dofs;
+  std::vector<double> u_e, f_e, K_e;
+  Eigen::MatrixXd B, DB;
+  Voigt eps, sig;
+  VoigtMatrix D;
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index c = owned_cells_[k];
+    ElementValues& ev = values_for(mesh_.cell_types[c]);
+    ev.reinit(mesh_, c);
+    dofs_.cell_dofs(mesh_, c, cell_dofs);
+    const int nd = ev.num_dofs();
+    u_e.resize(nd);
+    for (int a = 0; a < nd; ++a) u_e[a] = u[cell_dofs[a]];
+    f_e.assign(nd, 0.0);
+    K_e.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+    B.resize(nv_, nd);
+    const Material& mat = *materials_[mesh_.cell_regions[c]];
+    Eigen::Map<Eigen::VectorXd> f(f_e.data(), nd);
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
+        K_e.data(), nd, nd);
+    for (int q = 0; q < ev.num_points(); ++q) {
+      const Index p = qp_offset_[k] + q;
+      ev.strain_displacement(q, B);
+      eps = B * Eigen::Map<const Eigen::VectorXd>(u_e.data(), nd);
+      mat.update(eps, nullptr, sig, D, nullptr);
+      for (int i = 0; i < nv_; ++i) {
+        trial_stress_[p * nv_ + i] = sig(i);
+        trial_strain_[p * nv_ + i] = eps(i);
+      }
+      const Voigt total = sig + Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
+      const double w = ev.JxW(q);
+      f.noalias() += w * (B.transpose() * total);
+      DB.noalias() = D * B;
+      Km.noalias() += w * (B.transpose() * DB);
+    }
+    kernel(cell_dofs, f_e, K_e);
+  }
+}
+
+void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& constraints,
+                              SparseMatrix* K, DistributedVector& R) {
+  loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
+    const int nd = static_cast<int>(cell_dofs.size());
+    for (auto& v : f_e) v = -v; // residual contribution −f_int
+    constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
+    if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
+    for (int a = 0; a < nd; ++a) R.add(cell_dofs[a], f_e[a]);
+  });
+}
+
+void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f) {
+  loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
+    for (std::size_t a = 0; a < cell_dofs.size(); ++a) f.add(cell_dofs[a], f_e[a]);
+  });
+}
+
+void SolidAssembler::commit() {
+  stress_ = trial_stress_;
+  strain_ = trial_strain_;
+}
+
+void SolidAssembler::absorb_stress_into_initial() {
+  for (std::size_t i = 0; i < sigma0_.size(); ++i) sigma0_[i] += stress_[i];
+  std::fill(stress_.begin(), stress_.end(), 0.0);
+  std::fill(strain_.begin(), strain_.end(), 0.0);
+  trial_stress_ = stress_;
+  trial_strain_ = strain_;
+}
+
+void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {
+  std::vector<Index> cell_dofs;
+  for (Index c : owned_cells_) {
+    dofs_.cell_dofs(mesh_, c, cell_dofs);
+    pattern.add_cell(cell_dofs);
+  }
+}
+
+void SolidAssembler::cell_averages(std::vector<double>& strain, std::vector<double>& stress) const {
+  strain.assign(owned_cells_.size() * nv_, 0.0);
+  stress.assign(owned_cells_.size() * nv_, 0.0);
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index n = qp_offset_[k + 1] - qp_offset_[k];
+    for (Index p = qp_offset_[k]; p < qp_offset_[k + 1]; ++p)
+      for (int i = 0; i < nv_; ++i) {
+        strain[k * nv_ + i] += strain_[p * nv_ + i] / n;
+        stress[k * nv_ + i] += (stress_[p * nv_ + i] + sigma0_[p * nv_ + i]) / n;
+      }
+  }
+}
+
+} // namespace bipot

@@ -1,0 +1,72 @@
+#pragma once
+/// Cell loop of small-strain solid mechanics: tangent stiffness and internal forces
+/// f_int = ∫ Bᵀ (σ0 + σ(ε)) dV over the cells this rank owns, with quadrature-point state.
+
+#include "fem/assembly/constraints.hpp"
+#include "fem/assembly/dof_map.hpp"
+#include "fem/element/element_values.hpp"
+#include "fem/mesh/mesh.hpp"
+#include "materials/material.hpp"
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace bipot {
+
+class SparseMatrix;
+class SparsityPattern;
+class DistributedVector;
+
+class SolidAssembler {
+public:
+  /// `material_of_region[id]` is the material of mesh region id (not owned; may be null for
+  /// regions without cells). `owned_cells` are the cells this rank integrates.
+  SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs,
+                 std::vector<const Material*> material_of_region, std::vector<Index> owned_cells);
+  ~SolidAssembler();
+
+  /// Sets σ0 at every quadrature point from a function of position and region id.
+  void set_initial_stress(const std::function<Voigt(const std::array<double, 3>&, int)>& sigma0);
+
+  /// For the total displacement `u` (all global DOFs, replicated): adds the condensed local
+  /// systems K_e du = −f_int,e to `K` (if not null) and `R`. Trial stresses are kept for
+  /// commit().
+  void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
+                DistributedVector& R);
+  /// Adds the unconstrained internal force f_int(u) to `f` (reactions).
+  void internal_force(const std::vector<double>& u, DistributedVector& f);
+  /// Accepts the last trial state (end of a converged increment).
+  void commit();
+
+  /// Zeroes total strains history for a displacement reset while keeping stresses: the
+  /// current stress becomes the initial stress (geostatic stage).
+  void absorb_stress_into_initial();
+
+  const std::vector<Index>& owned_cells() const { return owned_cells_; }
+  /// Adds the DOFs of every owned cell to a sparsity pattern.
+  void add_to_pattern(SparsityPattern& pattern) const;
+  /// Committed cell averages (over quadrature points) of strain and stress of the owned
+  /// cells, Voigt components interleaved.
+  void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
+  int voigt_size() const { return nv_; }
+
+private:
+  ElementValues& values_for(CellType type);
+  template <class CellKernel> void loop(const std::vector<double>& u, CellKernel&& kernel);
+
+  const Mesh& mesh_;
+  Kinematics kin_;
+  const DofMap& dofs_;
+  std::vector<const Material*> materials_;
+  std::vector<Index> owned_cells_;
+  int nv_;
+  std::map<CellType, std::unique_ptr<ElementValues>> values_;
+  std::vector<Index> qp_offset_;            ///< per owned cell, first quadrature point
+  std::vector<double> sigma0_;              ///< initial stress per point (nv each)
+  std::vector<double> stress_, trial_stress_; ///< material stress per point (excl. σ0)
+  std::vector<double> strain_, trial_strain_;
+};
+
+} // namespace bipot

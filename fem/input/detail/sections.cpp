@@ -1,0 +1,309 @@
+#include "fem/input/detail/sections.hpp"
+
+#include "fem/core/nearest_name.hpp"
+#include "materials/material_registry.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace bipot::input {
+
+namespace {
+
+AxisSegments read_axis(const YamlMap& parent, const std::string& key) {
+  AxisSegments axis;
+  YamlMap m(parent.node(key), parent.path(key), parent.diag(), {"breaks", "cells", "grading"});
+  if (!m.valid()) return axis;
+  m.reals("breaks", axis.breaks, true);
+  m.integers("cells", axis.cells, true);
+  m.reals("grading", axis.grading);
+  const std::size_t segments = axis.breaks.empty() ? 0 : axis.breaks.size() - 1;
+  if (axis.breaks.size() == 1) m.error("breaks", "need at least two break points");
+  for (std::size_t i = 1; i < axis.breaks.size(); ++i)
+    if (!(axis.breaks[i] > axis.breaks[i - 1]))
+      m.error("breaks", "break points must increase strictly");
+  if (!axis.cells.empty() && axis.cells.size() != segments)
+    m.error("cells", "expected " + std::to_string(segments) + " cell counts (one per segment), got " +
+                         std::to_string(axis.cells.size()));
+  for (int c : axis.cells)
+    if (c < 1) m.error("cells", "cell counts must be at least 1");
+  if (axis.grading.empty()) axis.grading.assign(segments, 1.0);
+  else if (axis.grading.size() != segments)
+    m.error("grading", "expected " + std::to_string(segments) + " grading ratios, got " +
+                           std::to_string(axis.grading.size()));
+  for (double g : axis.grading)
+    if (!(g > 0)) m.error("grading", "grading ratios must be > 0");
+  return axis;
+}
+
+// In 2D, r and z are accepted as aliases of x and y (axisymmetric inputs read naturally).
+int component_index(const std::string& name, int dim, bool axisymmetric) {
+  if (name == "x" || (axisymmetric && name == "r")) return 0;
+  if (name == "y" || (axisymmetric && name == "z")) return 1;
+  if (dim == 3 && name == "z") return 2;
+  return -1;
+}
+
+} // namespace
+
+MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
+  MeshSpec mesh;
+  YamlMap m(top.node("mesh"), "mesh", top.diag(), {"file", "blocks"});
+  mesh.where = top.where("mesh");
+  if (!m.valid()) return mesh;
+  if (m.has("file") == m.has("blocks")) {
+    top.error("mesh", "give exactly one of 'file' (a Gmsh .msh) or 'blocks' (structured)");
+    return mesh;
+  }
+  if (m.string("file", mesh.file) && m.has("file")) {
+    mesh.where = m.where("file");
+    std::filesystem::path p(mesh.file);
+    if (p.is_relative() && !base_dir.empty()) p = std::filesystem::path(base_dir) / p;
+    mesh.file = p.string();
+    if (!std::filesystem::exists(p)) m.error("file", "mesh file not found: " + mesh.file);
+  }
+  if (m.has("blocks")) {
+    mesh.has_blocks = true;
+    std::vector<std::string> keys = {"cell", "x", "y", "regions"};
+    if (dim == 3) keys.insert(keys.begin() + 3, "z");
+    YamlMap b(m.node("blocks"), "mesh.blocks", top.diag(), keys);
+    if (!b.valid()) return mesh;
+    mesh.where = m.where("blocks");
+    b.string("cell", mesh.cell);
+    const std::vector<std::string> cells2 = {"tri3", "tri6", "quad4", "quad8"};
+    const std::vector<std::string> cells3 = {"tet4", "hex8"};
+    const auto& allowed = dim == 3 ? cells3 : cells2;
+    if (std::find(allowed.begin(), allowed.end(), mesh.cell) == allowed.end())
+      b.error("cell", "cell type '" + mesh.cell + "' is not available in " +
+                          std::to_string(dim) + "D; allowed: " + join_names(allowed));
+    for (const char* axis : {"x", "y", "z"}) {
+      if (std::string(axis) == "z" && dim == 2) continue;
+      AxisSegments& a = axis[0] == 'x' ? mesh.x : (axis[0] == 'y' ? mesh.y : mesh.z);
+      if (b.has(axis)) a = read_axis(b, axis);
+      else b.missing(axis, "breaks, cells and optional grading along this axis");
+    }
+    b.strings("regions", mesh.block_regions, true);
+    std::size_t blocks = std::max<std::size_t>(mesh.x.breaks.size(), 1) - 1;
+    blocks *= std::max<std::size_t>(mesh.y.breaks.size(), 1) - 1;
+    if (dim == 3) blocks *= std::max<std::size_t>(mesh.z.breaks.size(), 1) - 1;
+    if (b.has("regions") && blocks > 0 && mesh.block_regions.size() != blocks)
+      b.error("regions", "expected " + std::to_string(blocks) +
+                             " region names (one per block, x fastest), got " +
+                             std::to_string(mesh.block_regions.size()));
+  }
+  return mesh;
+}
+
+ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
+                                  Diagnostics& diag, const ParamSchema& schema,
+                                  const std::vector<std::string>& skip) {
+  ParameterSet params;
+  if (!node.IsMap()) {
+    diag.error(node, path, "expected a map of parameters, got " + describe_node(node));
+    return params;
+  }
+  std::map<std::string, YAML::Node> key_nodes;
+  for (const auto& kv : node) {
+    const std::string key = kv.first.Scalar();
+    if (std::find(skip.begin(), skip.end(), key) != skip.end()) continue;
+    key_nodes[key] = kv.first;
+    const ParamSpec* spec = schema.find(key);
+    const YAML::Node& v = kv.second;
+    ParamValue value = v.IsScalar() ? ParamValue(v.Scalar()) : ParamValue(describe_node(v));
+    if (spec) {
+      double d = 0;
+      long i = 0;
+      bool b = false;
+      bool ok = true;
+      switch (spec->type) {
+      case ParamType::Real: ok = decode_real(v, d), value = d; break;
+      case ParamType::Integer: ok = decode_integer(v, i), value = i; break;
+      case ParamType::Boolean: ok = decode_boolean(v, b), value = b; break;
+      case ParamType::String: ok = v.IsScalar(); break;
+      }
+      if (!ok) {
+        const char* what = spec->type == ParamType::Integer ? "an integer"
+                           : spec->type == ParamType::Real  ? "a real number"
+                           : spec->type == ParamType::Boolean ? "true or false"
+                                                               : "a string";
+        diag.error(kv.first, join_path(path, key),
+                   std::string("expected ") + what + ", got " + describe_node(v));
+        continue;
+      }
+    }
+    params.set(key, value);
+  }
+  const auto problems = validate(schema, params);
+  for (const auto& p : problems) {
+    auto it = key_nodes.find(p.key);
+    const YAML::Node& at = it != key_nodes.end() ? it->second : node;
+    diag.error(at, join_path(path, p.key), p.message);
+  }
+  return params;
+}
+
+ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
+                             const ParamSchema& schema, const std::vector<std::string>& skip) {
+  return read_parameters_node(parent.node(key), parent.path(key), parent.diag(), schema, skip);
+}
+
+std::vector<MaterialSpec> read_materials(const YamlMap& top) {
+  std::vector<MaterialSpec> out;
+  const YAML::Node node = top.node("materials");
+  if (!node.IsMap() || node.size() == 0) {
+    top.error("materials", "expected a map: region name -> {type: <material>, parameters...}");
+    return out;
+  }
+  const auto& registry = materials();
+  for (const auto& kv : node) {
+    MaterialSpec mat;
+    mat.region = kv.first.Scalar();
+    const std::string path = "materials." + mat.region;
+    mat.where = top.diag().where(kv.first, path);
+    const YAML::Node& body = kv.second;
+    if (!body.IsMap() || !body["type"]) {
+      top.diag().error(body, path,
+                       "expected {type: <material>, ...}; registered materials: " +
+                           join_names(registry.names()));
+      continue;
+    }
+    const YAML::Node type = body["type"];
+    mat.type = type.Scalar();
+    if (!registry.contains(mat.type)) {
+      top.diag().error(type, path + ".type", registry.unknown_message(mat.type));
+      continue;
+    }
+    mat.parameters =
+        read_parameters_node(body, path, top.diag(), registry.schema(mat.type), {"type"});
+    out.push_back(std::move(mat));
+  }
+  return out;
+}
+
+std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) {
+  std::vector<InitialStressSpec> out;
+  const YAML::Node list = top.node("initial_stress");
+  if (!list.IsSequence()) {
+    top.error("initial_stress", "expected a list of {region, type, ...}");
+    return out;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    InitialStressSpec s;
+    const std::string path = index_path("initial_stress", i);
+    YamlMap m(list[i], path, top.diag(),
+              {"region", "type", "unit_weight", "lateral_coefficient", "surface", "stress"});
+    if (!m.valid()) continue;
+    s.where = m.where("region");
+    m.string("region", s.region, true);
+    m.string("type", s.type, true);
+    if (s.type == "geostatic") {
+      if (m.real("unit_weight", s.unit_weight, true) && !(s.unit_weight >= 0))
+        m.error("unit_weight", "value must be >= 0 kN/m^3");
+      if (m.real("lateral_coefficient", s.lateral_coefficient, true) &&
+          !(s.lateral_coefficient >= 0))
+        m.error("lateral_coefficient", "value must be >= 0");
+      m.real("surface", s.surface, true);
+    } else if (s.type == "constant") {
+      if (m.reals("stress", s.stress, true) && m.has("stress") &&
+          static_cast<int>(s.stress.size()) != (dim == 2 ? 4 : 6))
+        m.error("stress", std::string("expected ") + (dim == 2 ? "4" : "6") +
+                              " Voigt components (tension positive)");
+    } else if (!s.type.empty()) {
+      m.error("type", "unknown initial stress type '" + s.type + "'; allowed: geostatic, constant");
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
+  std::vector<StageSpec> out;
+  const YAML::Node list = top.node("stages");
+  if (!list.IsSequence() || list.size() == 0) {
+    top.error("stages", "expected a non-empty list of stages");
+    return out;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    StageSpec st;
+    const std::string path = index_path("stages", i);
+    YamlMap m(list[i], path, top.diag(),
+              {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+               "loads"});
+    if (!m.valid()) continue;
+    st.where = top.diag().where(list[i], path);
+    st.name = "stage" + std::to_string(i + 1);
+    m.string("name", st.name);
+    if (m.integer("increments", st.increments) && st.increments < 1)
+      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, inf)");
+    if (m.real("duration", st.duration) && !(st.duration > 0))
+      m.error("duration", "value must be > 0 s");
+    m.boolean("reset_displacements", st.reset_displacements);
+    if (m.has("boundary_conditions")) {
+      const YAML::Node bcs = m.node("boundary_conditions");
+      if (!bcs.IsSequence()) m.error("boundary_conditions", "expected a list");
+      for (std::size_t j = 0; bcs.IsSequence() && j < bcs.size(); ++j) {
+        DirichletSpec bc;
+        YamlMap b(bcs[j], index_path(m.path("boundary_conditions"), j), top.diag(),
+                  {"set", "component", "value"});
+        if (!b.valid()) continue;
+        bc.where = b.where("set");
+        b.string("set", bc.set, true);
+        std::string comp;
+        if (b.string("component", comp, true) && b.has("component")) {
+          bc.component = component_index(comp, dim, dim == 2);
+          if (bc.component < 0)
+            b.error("component", "unknown component '" + comp + "'; allowed: " +
+                                     (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
+        }
+        b.real("value", bc.value);
+        st.boundary_conditions.push_back(bc);
+      }
+    }
+    if (m.has("loads")) {
+      const YAML::Node loads = m.node("loads");
+      if (!loads.IsSequence()) m.error("loads", "expected a list");
+      for (std::size_t j = 0; loads.IsSequence() && j < loads.size(); ++j) {
+        LoadSpec ld;
+        YamlMap l(loads[j], index_path(m.path("loads"), j), top.diag(), {"type", "set", "value"});
+        if (!l.valid()) continue;
+        ld.where = l.where("set");
+        std::string type;
+        l.string("type", type, true);
+        if (type == "pressure") {
+          ld.type = LoadSpec::Type::Pressure;
+          l.string("set", ld.set, true);
+          l.real("value", ld.pressure, true);
+        } else if (type == "traction") {
+          ld.type = LoadSpec::Type::Traction;
+          l.string("set", ld.set, true);
+          if (l.reals("value", ld.traction, true) && l.has("value") &&
+              static_cast<int>(ld.traction.size()) != dim)
+            l.error("value", "expected " + std::to_string(dim) + " traction components (kPa)");
+        } else if (type == "gravity") {
+          ld.type = LoadSpec::Type::Gravity;
+          ld.where = l.where("type");
+          if (l.has("set") || l.has("value"))
+            l.error("type", "gravity takes no set or value: it uses each material's unit_weight");
+        } else if (!type.empty()) {
+          l.error("type", "unknown load type '" + type + "'; allowed: pressure, traction, gravity");
+        }
+        st.loads.push_back(ld);
+      }
+    }
+    out.push_back(std::move(st));
+  }
+  return out;
+}
+
+OutputSpec read_output(const YamlMap& top) {
+  OutputSpec out;
+  YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every"});
+  if (!m.valid()) return out;
+  m.string("directory", out.directory);
+  m.boolean("vtk", out.vtk);
+  if (m.integer("every", out.every) && out.every < 1)
+    m.error("every", "value " + std::to_string(out.every) + " is out of range [1, inf)");
+  return out;
+}
+
+} // namespace bipot::input

@@ -1,0 +1,28 @@
+#pragma once
+/// Internal to fem/input: readers for each section of the input file. Each records its
+/// problems in the map's Diagnostics and returns what it could read.
+
+#include "fem/core/parameter_schema.hpp"
+#include "fem/input/detail/yaml_map.hpp"
+#include "fem/input/problem_spec.hpp"
+
+namespace bipot::input {
+
+MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir);
+std::vector<MaterialSpec> read_materials(const YamlMap& top);
+std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
+std::vector<StageSpec> read_stages(const YamlMap& top, int dim);
+OutputSpec read_output(const YamlMap& top);
+
+/// Reads the map at `parent[key]` as parameters of `schema` (keys in `skip` are left to the
+/// caller), decoding each value by its declared type, validating ranges, filling defaults,
+/// and reporting each problem at its own line.
+ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
+                             const ParamSchema& schema, const std::vector<std::string>& skip);
+
+/// Same for a map node already in hand.
+ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
+                                  Diagnostics& diag, const ParamSchema& schema,
+                                  const std::vector<std::string>& skip);
+
+} // namespace bipot::input

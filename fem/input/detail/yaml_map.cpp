@@ -1,0 +1,197 @@
+#include "fem/input/detail/yaml_map.hpp"
+
+#include "fem/core/nearest_name.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bipot::input {
+
+std::string Diagnostics::where(const YAML::Node& node, const std::string& path) const {
+  const YAML::Mark m = node.Mark();
+  std::string loc = file_;
+  if (m.line >= 0) loc += ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+  return loc + ": " + (path.empty() ? std::string("(top level)") : path);
+}
+
+void Diagnostics::error(const YAML::Node& node, const std::string& path,
+                        const std::string& message) {
+  error_at(where(node, path), message);
+}
+
+void Diagnostics::error_at(const std::string& where, const std::string& message) {
+  problems_.push_back(where + ": " + message);
+}
+
+std::string join_path(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+std::string index_path(const std::string& parent, std::size_t i) {
+  return parent + "[" + std::to_string(i) + "]";
+}
+
+bool decode_real(const YAML::Node& n, double& out) {
+  if (!n.IsScalar()) return false;
+  const std::string& s = n.Scalar();
+  if (s == ".inf" || s == "-.inf" || s == ".nan") return false; // not meaningful inputs
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(s, &used);
+    if (used != s.size() || !std::isfinite(v)) return false;
+    out = v;
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+bool decode_integer(const YAML::Node& n, long& out) {
+  if (!n.IsScalar()) return false;
+  const std::string& s = n.Scalar();
+  try {
+    std::size_t used = 0;
+    const long v = std::stol(s, &used);
+    if (used != s.size()) return false;
+    out = v;
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+bool decode_boolean(const YAML::Node& n, bool& out) {
+  if (!n.IsScalar()) return false;
+  return YAML::convert<bool>::decode(n, out);
+}
+
+std::string describe_node(const YAML::Node& n) {
+  if (n.IsSequence()) return "a list";
+  if (n.IsMap()) return "a map";
+  if (n.IsNull()) return "nothing";
+  return "'" + n.Scalar() + "'";
+}
+
+YamlMap::YamlMap(const YAML::Node& node, std::string path, Diagnostics& diag,
+                 const std::vector<std::string>& allowed)
+    : node_(node), path_(std::move(path)), diag_(diag) {
+  if (!node_.IsMap()) {
+    diag_.error(node_, path_, "expected a map of keys, got " + describe_node(node_));
+    return;
+  }
+  valid_ = true;
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::string msg = "unknown key";
+    const auto near = nearest_name(key, allowed);
+    if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+    msg += "; allowed keys: " + join_names(allowed);
+    diag_.error(kv.first, join_path(path_, key), msg);
+  }
+}
+
+bool YamlMap::has(const std::string& key) const {
+  if (!valid_) return false;
+  const YAML::Node& n = node_;
+  return static_cast<bool>(n[key]);
+}
+
+YAML::Node YamlMap::node(const std::string& key) const {
+  const YAML::Node& n = node_;
+  return n[key];
+}
+
+std::string YamlMap::where(const std::string& key) const {
+  return has(key) ? diag_.where(node(key), path(key)) : diag_.where(node_, path(key));
+}
+
+void YamlMap::missing(const std::string& key, const std::string& doc) const {
+  diag_.error(node_, path(key), "missing required key" + (doc.empty() ? "" : " (" + doc + ")"));
+}
+
+void YamlMap::error(const std::string& key, const std::string& message) const {
+  diag_.error_at(where(key), message);
+}
+
+namespace {
+template <class Decode, class T>
+bool read_scalar(const YamlMap& m, const std::string& key, T& out, bool required,
+                 const char* what, Decode decode) {
+  if (!m.has(key)) {
+    if (required && m.valid()) m.missing(key);
+    return !required;
+  }
+  const YAML::Node n = m.node(key);
+  T v{};
+  if (!decode(n, v)) {
+    m.error(key, std::string("expected ") + what + ", got " + describe_node(n));
+    return false;
+  }
+  out = v;
+  return true;
+}
+
+template <class Decode, class T>
+bool read_list(const YamlMap& m, const std::string& key, std::vector<T>& out, bool required,
+               const char* what, Decode decode) {
+  if (!m.has(key)) {
+    if (required && m.valid()) m.missing(key);
+    return !required;
+  }
+  const YAML::Node n = m.node(key);
+  if (!n.IsSequence()) {
+    m.error(key, std::string("expected a list of ") + what + ", got " + describe_node(n));
+    return false;
+  }
+  std::vector<T> values;
+  bool ok = true;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    T v{};
+    if (!decode(n[i], v)) {
+      m.diag().error(n[i], index_path(m.path(key), i),
+                     std::string("expected ") + what + ", got " + describe_node(n[i]));
+      ok = false;
+    }
+    values.push_back(v);
+  }
+  if (ok) out = values;
+  return ok;
+}
+
+bool decode_int(const YAML::Node& n, int& out) {
+  long v = 0;
+  if (!decode_integer(n, v)) return false;
+  out = static_cast<int>(v);
+  return true;
+}
+bool decode_string(const YAML::Node& n, std::string& out) {
+  if (!n.IsScalar()) return false;
+  out = n.Scalar();
+  return true;
+}
+} // namespace
+
+bool YamlMap::real(const std::string& key, double& out, bool required) const {
+  return read_scalar(*this, key, out, required, "a real number", decode_real);
+}
+bool YamlMap::integer(const std::string& key, int& out, bool required) const {
+  return read_scalar(*this, key, out, required, "an integer", decode_int);
+}
+bool YamlMap::boolean(const std::string& key, bool& out, bool required) const {
+  return read_scalar(*this, key, out, required, "true or false", decode_boolean);
+}
+bool YamlMap::string(const std::string& key, std::string& out, bool required) const {
+  return read_scalar(*this, key, out, required, "a string", decode_string);
+}
+bool YamlMap::reals(const std::string& key, std::vector<double>& out, bool required) const {
+  return read_list(*this, key, out, required, "real numbers", decode_real);
+}
+bool YamlMap::integers(const std::string& key, std::vector<int>& out, bool required) const {
+  return read_list(*this, key, out, required, "integers", decode_int);
+}
+bool YamlMap::strings(const std::string& key, std::vector<std::string>& out,
+                      bool required) const {
+  return read_list(*this, key, out, required, "strings", decode_string);
+}
+
+} // namespace bipot::input

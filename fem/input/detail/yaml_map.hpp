@@ -1,0 +1,77 @@
+#pragma once
+/// Internal to fem/input: one-pass validation helpers over yaml-cpp nodes. Every problem is
+/// recorded (not thrown) as "file:line:col: key.path: message" so a user sees all of them at
+/// once. Nodes are only read through const references: yaml-cpp's non-const operator[]
+/// inserts keys. yaml-cpp marks are 0-based; messages are 1-based like compilers'.
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+#include <vector>
+
+namespace bipot::input {
+
+class Diagnostics {
+public:
+  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+  /// "file:line:col: path" for a node.
+  std::string where(const YAML::Node& node, const std::string& path) const;
+  void error(const YAML::Node& node, const std::string& path, const std::string& message);
+  /// A problem whose location is already formatted by where().
+  void error_at(const std::string& where, const std::string& message);
+  const std::vector<std::string>& problems() const { return problems_; }
+  const std::string& file() const { return file_; }
+
+private:
+  std::string file_;
+  std::vector<std::string> problems_;
+};
+
+/// "a.b" or "a[2]" path helpers.
+std::string join_path(const std::string& parent, const std::string& key);
+std::string index_path(const std::string& parent, std::size_t i);
+
+/// A YAML mapping with a fixed set of allowed keys. Construction reports a non-map node and
+/// every unknown key (with the nearest allowed key).
+class YamlMap {
+public:
+  YamlMap(const YAML::Node& node, std::string path, Diagnostics& diag,
+          const std::vector<std::string>& allowed);
+
+  bool valid() const { return valid_; }
+  bool has(const std::string& key) const;
+  YAML::Node node(const std::string& key) const;
+  const YAML::Node& self() const { return node_; }
+  std::string path(const std::string& key) const { return join_path(path_, key); }
+  std::string where(const std::string& key) const;
+  Diagnostics& diag() const { return diag_; }
+
+  /// Typed readers: return false (and record the problem) on a wrong type or when a required
+  /// key is missing; leave `out` untouched when an optional key is absent.
+  bool real(const std::string& key, double& out, bool required = false) const;
+  bool integer(const std::string& key, int& out, bool required = false) const;
+  bool boolean(const std::string& key, bool& out, bool required = false) const;
+  bool string(const std::string& key, std::string& out, bool required = false) const;
+  bool reals(const std::string& key, std::vector<double>& out, bool required = false) const;
+  bool integers(const std::string& key, std::vector<int>& out, bool required = false) const;
+  bool strings(const std::string& key, std::vector<std::string>& out, bool required = false) const;
+  /// Records "missing required key" at this map.
+  void missing(const std::string& key, const std::string& doc = "") const;
+  /// Records a problem at a key (or at the map if the key is absent).
+  void error(const std::string& key, const std::string& message) const;
+
+private:
+  YAML::Node node_;
+  std::string path_;
+  Diagnostics& diag_;
+  bool valid_ = false;
+};
+
+/// Decodes a scalar as a double / long / bool; false if it is not one.
+bool decode_real(const YAML::Node& n, double& out);
+bool decode_integer(const YAML::Node& n, long& out);
+bool decode_boolean(const YAML::Node& n, bool& out);
+/// The node's text for messages ("[...]" for a sequence, "{...}" for a map).
+std::string describe_node(const YAML::Node& n);
+
+} // namespace bipot::input

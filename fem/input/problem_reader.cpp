@@ -1,0 +1,107 @@
+#include "fem/input/problem_reader.hpp"
+
+#include "fem/core/error.hpp"
+#include "fem/input/detail/yaml_map.hpp"
+#include "fem/input/detail/sections.hpp"
+#include "fem/linalg/linear_solver.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace bipot {
+
+using input::Diagnostics;
+using input::YamlMap;
+
+namespace {
+
+const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
+  static const std::vector<std::pair<std::string, std::string>> keys = {
+      {"kinematics", "plane_strain | axisymmetric | three_d (default plane_strain)"},
+      {"mesh", "either file: a Gmsh .msh, or blocks: a structured blocked mesh"},
+      {"materials", "map region name -> {type: <material>, <its parameters>}"},
+      {"linear_solver", "method, preconditioner, tolerance, ... (bipot describe linear_solver)"},
+      {"initial_stress", "list of {region, type: geostatic|constant, ...}"},
+      {"stages", "list of load stages: name, increments, boundary_conditions, loads"},
+      {"output", "directory, vtk, every"},
+  };
+  return keys;
+}
+
+ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::string& base_dir) {
+  ProblemSpec spec;
+  spec.file = diag.file();
+  std::vector<std::string> keys;
+  for (const auto& kv : top_level_keys()) keys.push_back(kv.first);
+  YamlMap top(root, "", diag, keys);
+  if (!top.valid()) return spec;
+
+  if (top.string("kinematics", spec.kinematics)) {
+    const std::vector<std::string> allowed = {"plane_strain", "axisymmetric", "three_d"};
+    if (std::find(allowed.begin(), allowed.end(), spec.kinematics) == allowed.end())
+      top.error("kinematics", "unknown kinematics '" + spec.kinematics +
+                                  "'; allowed: plane_strain, axisymmetric, three_d");
+  }
+  const int dim = spec.kinematics == "three_d" ? 3 : 2;
+
+  if (top.has("mesh")) spec.mesh = input::read_mesh(top, dim, base_dir);
+  else top.missing("mesh", "a Gmsh file or a blocks generator");
+
+  if (top.has("materials")) spec.materials = input::read_materials(top);
+  else top.missing("materials", "one entry per mesh region");
+
+  ParamSchema solver_schema = LinearSolver::schema();
+  if (top.has("linear_solver")) {
+    spec.linear_solver = input::read_parameters(top, "linear_solver", solver_schema, {});
+  } else {
+    validate(solver_schema, spec.linear_solver); // defaults
+  }
+
+  if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
+  if (top.has("stages")) spec.stages = input::read_stages(top, dim);
+  else top.missing("stages", "at least one load stage");
+  if (top.has("output")) spec.output = input::read_output(top);
+  return spec;
+}
+
+ProblemSpec parse(const std::string& text, const std::string& file_name,
+                  const std::string& base_dir) {
+  Diagnostics diag(file_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) throw InputError(file_name + ": the input file is empty");
+  ProblemSpec spec = read_root(root, diag, base_dir);
+  if (!diag.problems().empty()) throw InputError(diag.problems());
+  return spec;
+}
+
+} // namespace
+
+ProblemSpec read_problem_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the input file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const auto dir = std::filesystem::path(path).parent_path().string();
+  return parse(buffer.str(), path, dir);
+}
+
+ProblemSpec read_problem_text(const std::string& text, const std::string& file_name) {
+  return parse(text, file_name, "");
+}
+
+std::string describe_input_format() {
+  std::ostringstream os;
+  os << "bipot input file (YAML), top-level keys:\n";
+  for (const auto& [key, doc] : top_level_keys()) os << "  " << key << ": " << doc << "\n";
+  return os.str();
+}
+
+} // namespace bipot

@@ -1,0 +1,87 @@
+#pragma once
+/// The validated content of a bipot input file, as plain data (no yaml-cpp types).
+/// Every item that names something only checkable against the mesh (sets, regions) keeps
+/// `where` = "file:line:col: key.path" so later checks report the user's line.
+
+#include "fem/core/parameter_schema.hpp"
+#include "fem/mesh/structured_mesh.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bipot {
+
+struct MeshSpec {
+  std::string file; ///< Gmsh .msh path, resolved against the input file's folder; or
+  bool has_blocks = false;
+  std::string cell = "quad4";
+  AxisSegments x, y, z;
+  std::vector<std::string> block_regions;
+  std::string where;
+};
+
+struct MaterialSpec {
+  std::string region;
+  std::string type;
+  ParameterSet parameters; ///< validated against the material's schema, defaults filled in
+  std::string where;
+};
+
+/// Initial (e.g. geostatic) stress in a region; tension positive.
+struct InitialStressSpec {
+  std::string region;
+  std::string type;             ///< "geostatic" or "constant"
+  double unit_weight = 0;       ///< kN/m³ (geostatic)
+  double lateral_coefficient = 1; ///< K0 (geostatic): horizontal = K0 × vertical
+  double surface = 0;           ///< vertical coordinate of the free surface (geostatic)
+  std::vector<double> stress;   ///< Voigt components (constant)
+  std::string where;
+};
+
+struct DirichletSpec {
+  std::string set;
+  int component = 0; ///< 0 = x/r, 1 = y/z(axisymmetric), 2 = z
+  double value = 0;  ///< value reached at the end of the stage (m)
+  std::string where;
+};
+
+struct LoadSpec {
+  enum class Type { Pressure, Traction, Gravity };
+  Type type = Type::Pressure;
+  std::string set;           ///< facet set (pressure, traction)
+  double pressure = 0;       ///< kPa, acts against the outward normal
+  std::vector<double> traction; ///< kPa, one per spatial component
+  std::string where;
+};
+
+/// A stage lists the boundary conditions and loads in force at its end; values are ramped
+/// linearly over its increments from their state at the end of the previous stage.
+struct StageSpec {
+  std::string name;
+  int increments = 1;
+  double duration = 1.0; ///< pseudo-time (s) spanned by the stage
+  bool reset_displacements = false; ///< zero the displacements at the end, keep stresses
+  std::vector<DirichletSpec> boundary_conditions;
+  std::vector<LoadSpec> loads;
+  std::string where;
+};
+
+struct OutputSpec {
+  std::string directory = "results";
+  bool vtk = true;
+  int every = 1; ///< write VTK every n-th converged increment (and always the last of a stage)
+};
+
+struct ProblemSpec {
+  std::string file;                    ///< the input file as given
+  std::string kinematics = "plane_strain";
+  MeshSpec mesh;
+  std::vector<MaterialSpec> materials;
+  ParameterSet linear_solver;          ///< validated against LinearSolver's schema
+  std::vector<InitialStressSpec> initial_stress;
+  std::vector<StageSpec> stages;
+  OutputSpec output;
+};
+
+} // namespace bipot

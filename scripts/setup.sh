@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian packages bipot needs (only those missing), then configures and builds
+# Release into build/. Idempotent: a second run only rebuilds what changed.
+# Usage: scripts/setup.sh            (BUILD_DIR, BUILD_TYPE and JOBS may be set in the environment)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build_dir="${BUILD_DIR:-$root/build}"
+build_type="${BUILD_TYPE:-Release}"
+jobs="${JOBS:-$(nproc)}"
+
+# trilinos-all-dev rather than the split packages: find_package(Trilinos) needs every package's
+# config file. Its exported targets reference scotch/ptscotch, VTK's reference libXi/libXxf86vm.
+packages=(
+  build-essential cmake pkg-config
+  trilinos-all-dev libptscotch-dev libscotch-dev
+  libeigen3-dev libyaml-cpp-dev libvtk9-dev libxi-dev libxxf86vm-dev
+  libgmsh-dev gmsh
+  openmpi-bin libopenmpi-dev
+  libgtest-dev libbenchmark-dev
+  python3 python3-matplotlib python3-numpy
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" > "${TMPDIR:-/tmp}/bipot-apt.log" \
+    || { echo "setup: apt-get failed, see ${TMPDIR:-/tmp}/bipot-apt.log" >&2; exit 1; }
+fi
+
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" > "$build_dir.configure.log" 2>&1 \
+  || { cat "$build_dir.configure.log" >&2; exit 1; }
+echo "setup: building in $build_dir with $jobs jobs"
+cmake --build "$build_dir" -j "$jobs"

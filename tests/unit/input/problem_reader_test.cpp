@@ -1,0 +1,141 @@
+// Bad input is reported in one pass, each problem as file:line:col: key.path: message.
+#include "fem/analysis/model.hpp"
+#include "fem/core/error.hpp"
+#include "fem/input/problem_reader.hpp"
+
+#include <gtest/gtest.h>
+
+namespace bipot {
+namespace {
+
+const std::string good =
+    "kinematics: axisymmetric\n"                                                     // 1
+    "mesh:\n"                                                                        // 2
+    "  blocks:\n"                                                                    // 3
+    "    cell: quad4\n"                                                              // 4
+    "    x: {breaks: [0, 1], cells: [2]}\n"                                          // 5
+    "    y: {breaks: [0, 1], cells: [2]}\n"                                          // 6
+    "    regions: [soil]\n"                                                          // 7
+    "materials:\n"                                                                   // 8
+    "  soil: {type: linear_elastic, youngs_modulus: 3.0e4, poissons_ratio: 0.33}\n"  // 9
+    "stages:\n"                                                                      // 10
+    "  - name: load\n"                                                               // 11
+    "    boundary_conditions:\n"                                                     // 12
+    "      - {set: bottom, component: z, value: 0}\n"                                // 13
+    "    loads:\n"                                                                   // 14
+    "      - {type: pressure, set: top, value: 10}\n";                               // 15
+
+std::vector<std::string> problems_of(const std::string& text) {
+  try {
+    build_model(read_problem_text(text, "in.yaml"));
+  } catch (const InputError& e) {
+    return e.problems();
+  }
+  return {};
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return text.replace(pos, from.size(), to);
+}
+
+::testing::AssertionResult has(const std::vector<std::string>& problems, const std::string& s) {
+  for (const auto& p : problems)
+    if (p.find(s) != std::string::npos) return ::testing::AssertionSuccess();
+  std::string all;
+  for (const auto& p : problems) all += "\n  " + p;
+  return ::testing::AssertionFailure() << "no problem contains \"" << s << "\" in:" << all;
+}
+
+TEST(ProblemReader, GoodInputParses) {
+  const ProblemSpec spec = read_problem_text(good, "in.yaml");
+  EXPECT_EQ(spec.kinematics, "axisymmetric");
+  ASSERT_EQ(spec.stages.size(), 1u);
+  EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1); // z is the axial component
+  EXPECT_EQ(spec.materials[0].parameters.real("unit_weight"), 0.0); // default filled in
+  EXPECT_TRUE(problems_of(good).empty());
+}
+
+TEST(ProblemReader, UnknownKeySuggestsNearest) {
+  const auto p = problems_of(replace(good, "poissons_ratio", "poisson_ratio"));
+  EXPECT_TRUE(has(p, "in.yaml:9:"));
+  EXPECT_TRUE(has(p, "materials.soil.poisson_ratio: unknown key for 'linear_elastic' (did you "
+                     "mean 'poissons_ratio'?)"));
+  EXPECT_TRUE(has(p, "materials.soil.poissons_ratio: missing required key"));
+  const auto q = problems_of(replace(good, "stages:", "stagse:"));
+  EXPECT_TRUE(has(q, "in.yaml:10:1: stagse: unknown key (did you mean 'stages'?)"));
+}
+
+TEST(ProblemReader, UnknownMaterialListsRegistered) {
+  const auto p = problems_of(replace(good, "type: linear_elastic", "type: mohr_coulomb"));
+  EXPECT_TRUE(has(p, "in.yaml:9:16: materials.soil.type: unknown material 'mohr_coulomb'; "
+                     "registered: linear_elastic"));
+}
+
+TEST(ProblemReader, WrongTypeAndOutOfRange) {
+  const auto p = problems_of(replace(good, "youngs_modulus: 3.0e4", "youngs_modulus: soft"));
+  EXPECT_TRUE(has(p, "materials.soil.youngs_modulus: expected a real number, got 'soft'"));
+  const auto q = problems_of(replace(good, "youngs_modulus: 3.0e4", "youngs_modulus: -3.0e4"));
+  EXPECT_TRUE(has(q, "in.yaml:9:32: materials.soil.youngs_modulus: value -30000 is out of range "
+                     "(0, inf) kPa"));
+  const auto r = problems_of(replace(good, "cells: [2]}\n    y", "cells: [0]}\n    y"));
+  EXPECT_TRUE(has(r, "mesh.blocks.x.cells: cell counts must be at least 1"));
+}
+
+TEST(ProblemReader, MissingRequiredKey) {
+  const auto p = problems_of(replace(good, "    loads:\n      - {type: pressure, set: top, value: 10}\n",
+                                     "    loads:\n      - {type: pressure, set: top}\n"));
+  EXPECT_TRUE(has(p, "stages[0].loads[0].value: missing required key"));
+  const auto q = problems_of(replace(good, "kinematics: axisymmetric\n", "kinematics: axisymmetric\nmeshh: 1\n"));
+  EXPECT_TRUE(has(q, "meshh: unknown key (did you mean 'mesh'?)"));
+}
+
+TEST(ProblemReader, EveryProblemIsReportedAtOnce) {
+  std::string text = replace(good, "poissons_ratio: 0.33", "poissons_ratio: 0.7");
+  text = replace(text, "component: z", "component: q");
+  text = replace(text, "type: pressure", "type: pressur");
+  const auto p = problems_of(text);
+  EXPECT_EQ(p.size(), 3u);
+  EXPECT_TRUE(has(p, "materials.soil.poissons_ratio: value 0.7 is out of range (-1, 0.5)"));
+  EXPECT_TRUE(has(p, "stages[0].boundary_conditions[0].component: unknown component 'q'"));
+  EXPECT_TRUE(has(p, "stages[0].loads[0].type: unknown load type 'pressur'"));
+}
+
+TEST(ProblemReader, MeshDependentChecksKeepTheUsersLine) {
+  const auto p = problems_of(replace(good, "set: bottom", "set: botom"));
+  EXPECT_TRUE(has(p, "in.yaml:13:15: stages[0].boundary_conditions[0].set: no node or facet set "
+                     "named 'botom' in the mesh (did you mean 'bottom'?)"));
+  const auto q = problems_of(replace(good, "  soil: {type", "  soils: {type"));
+  EXPECT_TRUE(has(q, "in.yaml:9:3: materials.soils: no region named 'soils' in the mesh (did you "
+                     "mean 'soil'?); available: soil"));
+  EXPECT_TRUE(has(q, "region 'soil' of the mesh has no material"));
+}
+
+TEST(ProblemReader, SyntaxErrorHasLineAndColumn) {
+  try {
+    read_problem_text("mesh: {blocks: [1, 2\nstages: []\n", "bad.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.yaml:"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("YAML syntax error"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ProblemReader, MissingFileIsNamed) {
+  try {
+    read_problem_file("/nonexistent/model.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/model.yaml: cannot open the input file");
+  }
+}
+
+TEST(ProblemReader, LinearSolverOptionsAreValidated) {
+  const auto p = problems_of(good + "linear_solver: {method: bicgstab, tolerance: -1}\n");
+  EXPECT_TRUE(has(p, "linear_solver.method: value \"bicgstab\" is not one of"));
+  EXPECT_TRUE(has(p, "linear_solver.tolerance: value -1 is out of range"));
+}
+
+} // namespace
+} // namespace bipot
