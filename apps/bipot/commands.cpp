@@ -11,6 +11,7 @@
 #include "materials/material_registry.hpp"
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 namespace bipot::app {
@@ -18,6 +19,14 @@ namespace bipot::app {
 namespace {
 
 bool root() { return mpi_rank() == 0; }
+
+// Peak resident memory of this process (VmHWM), MB; 0 where /proc is not available.
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0.0;
+}
 
 bool wants_help(const std::vector<std::string>& args) {
   for (const auto& a : args)
@@ -129,11 +138,18 @@ int run_command(const std::vector<std::string>& args) {
                   r.residual, r.seconds);
       std::fflush(stdout);
     });
-    if (root() && !quiet)
-      std::cout << "bipot: done, " << summary.steps << " increments, " << summary.linear_solves
-                << " linear solves in " << summary.seconds << " s\n"
-                << "bipot: results in " << writer.directory() << " (ParaView: "
+    const double peak_mb = max_all(peak_memory_mb());
+    if (root()) {
+      std::printf("bipot: done: %d increments, %d linear solves (%d iterations), %d matrix "
+                  "set-ups\n"
+                  "bipot: time %.3f s = assembly %.3f + set-up %.3f + solve %.3f + output %.3f "
+                  "+ other; peak memory %.1f MB per rank\n",
+                  summary.steps, summary.linear_solves, summary.linear_iterations,
+                  summary.matrix_setups, summary.seconds, summary.assembly_seconds,
+                  summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+      std::cout << "bipot: results in " << writer.directory() << " (ParaView: "
                 << writer.pvd_path() << ")\n";
+    }
     return 0;
   });
 }

@@ -63,7 +63,6 @@ struct StaticAnalysis::Impl {
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
-  SparsityPattern pattern;
   std::unique_ptr<SparseMatrix> K;
   DistributedVector R, du, F_prev, F_cur, F_step, reaction;
   LinearSolver solver;
@@ -81,6 +80,7 @@ struct StaticAnalysis::Impl {
         F_cur(dist), F_step(dist), reaction(dist),
         solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)),
         u(dofs.num_dofs(), 0.0), linear(all_linear(m)) {
+    SparsityPattern pattern;
     solid.add_to_pattern(pattern);
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
@@ -153,6 +153,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         for (const auto& [d, v] : target)
           constraints.set(d, it == 0 ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
         const bool need_matrix = !(linear && matrix_ready);
+        auto t0 = std::chrono::steady_clock::now();
         R.set_zero();
         if (need_matrix) K->set_zero();
         solid.assemble(u, constraints, need_matrix ? K.get() : nullptr, R);
@@ -163,6 +164,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         for (Index i = 0; i < n_owned; ++i)
           if (!constraints.is_constrained(first + i)) r[i] += f[i];
         norm = R.norm2();
+        summary.assembly_seconds += seconds_since(t0);
         if (it == 0) {
           reference = std::max(norm, F_step.norm2());
           if (reference == 0.0) {
@@ -177,13 +179,18 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         }
         if (it >= options.max_iterations) break;
         if (need_matrix) {
+          t0 = std::chrono::steady_clock::now();
           solver.setup(*K);
+          summary.setup_seconds += seconds_since(t0);
           matrix_ready = true;
           ++summary.matrix_setups;
         }
         du.set_zero();
+        t0 = std::chrono::steady_clock::now();
         const LinearSolveStats stats = solver.solve(R, du);
+        summary.solve_seconds += seconds_since(t0);
         linear_iterations += stats.iterations;
+        summary.linear_iterations += stats.iterations;
         ++summary.linear_solves;
         const std::vector<double> du_all = du.gather_all();
         for (std::size_t i = 0; i < u.size(); ++i) u[i] += du_all[i];
@@ -199,11 +206,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       }
       solid.commit();
       // Reactions: f_int − f_ext on every DOF (nonzero only where supports act).
+      auto t0 = std::chrono::steady_clock::now();
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
       reaction.axpy(-1.0, F_step);
       reaction_all = reaction.gather_all();
+      summary.assembly_seconds += seconds_since(t0);
 
       StepReport rep;
       rep.stage = stage.name;
@@ -217,14 +226,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.linear_iterations = linear_iterations;
       rep.residual = history.empty() ? 0.0 : history.back();
       rep.seconds = seconds_since(step_start);
+      t0 = std::chrono::steady_clock::now();
       if (writer) writer->write_step(rep, *this_analysis);
+      summary.output_seconds += seconds_since(t0);
       if (on_step) on_step(rep);
     }
     F_prev.copy(F_cur);
     time += stage.duration;
     if (stage.reset_displacements) {
+      solid.absorb_stress_into_initial(u);
       std::fill(u.begin(), u.end(), 0.0);
-      solid.absorb_stress_into_initial();
     }
   }
   summary.seconds = seconds_since(run_start);

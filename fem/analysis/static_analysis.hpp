@@ -38,9 +38,14 @@ struct StepReport {
 struct RunSummary {
   int steps = 0;
   int linear_solves = 0;
-  int matrix_setups = 0;
+  int linear_iterations = 0;  ///< Krylov iterations over all solves
+  int matrix_setups = 0;      ///< preconditioner/factorisation set-ups
   Index num_dofs = 0;
-  double seconds = 0;
+  double seconds = 0;          ///< whole run, wall time
+  double assembly_seconds = 0; ///< cell loops, loads, reactions
+  double setup_seconds = 0;    ///< preconditioner or factorisation
+  double solve_seconds = 0;    ///< Krylov or triangular solves
+  double output_seconds = 0;   ///< VTK and CSV
 };
 
 class StaticAnalysis {

@@ -22,12 +22,11 @@ SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& d
                        std::to_string(c) + ")");
     qp_offset_.push_back(qp_offset_.back() + values_for(mesh_.cell_types[c]).num_points());
   }
-  const std::size_t n = static_cast<std::size_t>(qp_offset_.back()) * nv_;
-  sigma0_.assign(n, 0.0);
-  stress_.assign(n, 0.0);
-  strain_.assign(n, 0.0);
-  trial_stress_ = stress_;
-  trial_strain_ = strain_;
+  const std::size_t n = owned_cells_.size() * nv_;
+  cell_strain_.assign(n, 0.0);
+  cell_stress_.assign(n, 0.0);
+  trial_cell_strain_ = cell_strain_;
+  trial_cell_stress_ = cell_stress_;
 }
 
 SolidAssembler::~SolidAssembler() = default;
@@ -44,6 +43,7 @@ ElementValues& SolidAssembler::values_for(CellType type) {
 
 void SolidAssembler::set_initial_stress(
     const std::function<Voigt(const std::array<double, 3>&, int)>& sigma0) {
+  sigma0_.assign(static_cast<std::size_t>(qp_offset_.back()) * nv_, 0.0);
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
     ElementValues& ev = values_for(mesh_.cell_types[c]);
@@ -55,10 +55,12 @@ void SolidAssembler::set_initial_stress(
   }
 }
 
-// Runs `kernel(k, cell, ev, dofs, u_e, f_e, K_e)` after integrating the cell: f_e = f_int,e,
-// K_e = tangent (row-major), both sized num_dofs.
+// Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and
+// K_e = tangent (row-major), both sized num_dofs. Also records the trial cell averages and,
+// if `point_stress` is given, calls it with (point index, material stress) at every point.
 template <class CellKernel>
-void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel) {
+void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
+                          const std::function<void(Index, const Voigt&)>& point_stress) {
   std::vector<Index> cell_dofs;
   std::vector<double> u_e, f_e, K_e;
   Eigen::MatrixXd B, DB;
@@ -79,16 +81,23 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel) {
     Eigen::Map<Eigen::VectorXd> f(f_e.data(), nd);
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
         K_e.data(), nd, nd);
+    double* avg_strain = &trial_cell_strain_[k * nv_];
+    double* avg_stress = &trial_cell_stress_[k * nv_];
+    std::fill(avg_strain, avg_strain + nv_, 0.0);
+    std::fill(avg_stress, avg_stress + nv_, 0.0);
+    const double share = 1.0 / ev.num_points();
     for (int q = 0; q < ev.num_points(); ++q) {
       const Index p = qp_offset_[k] + q;
       ev.strain_displacement(q, B);
       eps = B * Eigen::Map<const Eigen::VectorXd>(u_e.data(), nd);
       mat.update(eps, nullptr, sig, D, nullptr);
+      if (point_stress) point_stress(p, sig);
+      Voigt total = sig;
+      if (!sigma0_.empty()) total += Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
       for (int i = 0; i < nv_; ++i) {
-        trial_stress_[p * nv_ + i] = sig(i);
-        trial_strain_[p * nv_ + i] = eps(i);
+        avg_strain[i] += share * eps(i);
+        avg_stress[i] += share * total(i);
       }
-      const Voigt total = sig + Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
       const double w = ev.JxW(q);
       f.noalias() += w * (B.transpose() * total);
       DB.noalias() = D * B;
@@ -116,16 +125,22 @@ void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVec
 }
 
 void SolidAssembler::commit() {
-  stress_ = trial_stress_;
-  strain_ = trial_strain_;
+  cell_strain_ = trial_cell_strain_;
+  cell_stress_ = trial_cell_stress_;
 }
 
-void SolidAssembler::absorb_stress_into_initial() {
-  for (std::size_t i = 0; i < sigma0_.size(); ++i) sigma0_[i] += stress_[i];
-  std::fill(stress_.begin(), stress_.end(), 0.0);
-  std::fill(strain_.begin(), strain_.end(), 0.0);
-  trial_stress_ = stress_;
-  trial_strain_ = strain_;
+void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
+  if (sigma0_.empty()) sigma0_.assign(static_cast<std::size_t>(qp_offset_.back()) * nv_, 0.0);
+  std::vector<double> added(sigma0_.size(), 0.0);
+  loop(
+      u, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
+      [&](Index p, const Voigt& sig) {
+        for (int i = 0; i < nv_; ++i) added[p * nv_ + i] = sig(i);
+      });
+  for (std::size_t i = 0; i < sigma0_.size(); ++i) sigma0_[i] += added[i];
+  // Stresses are unchanged and the strains restart from zero.
+  std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
+  trial_cell_strain_ = cell_strain_;
 }
 
 void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {
@@ -137,16 +152,8 @@ void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {
 }
 
 void SolidAssembler::cell_averages(std::vector<double>& strain, std::vector<double>& stress) const {
-  strain.assign(owned_cells_.size() * nv_, 0.0);
-  stress.assign(owned_cells_.size() * nv_, 0.0);
-  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
-    const Index n = qp_offset_[k + 1] - qp_offset_[k];
-    for (Index p = qp_offset_[k]; p < qp_offset_[k + 1]; ++p)
-      for (int i = 0; i < nv_; ++i) {
-        strain[k * nv_ + i] += strain_[p * nv_ + i] / n;
-        stress[k * nv_ + i] += (stress_[p * nv_ + i] + sigma0_[p * nv_ + i]) / n;
-      }
-  }
+  strain = cell_strain_;
+  stress = cell_stress_;
 }
 
 } // namespace bipot

@@ -1,0 +1,33 @@
+// The docs' parameter tables are the schemas' own output: they cannot drift from the code.
+#include "fem/linalg/linear_solver.hpp"
+#include "materials/material_registry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace bipot {
+namespace {
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(DocsTablesMatchSchemas, InputReference) {
+  const std::string doc = read(BIPOT_SOURCE_DIR "/docs/input_reference.md");
+  ASSERT_FALSE(doc.empty());
+  for (const auto& name : materials().names()) {
+    EXPECT_NE(doc.find("### `" + name + "`"), std::string::npos) << name;
+    EXPECT_NE(doc.find(materials().schema(name).markdown_table()), std::string::npos)
+        << "docs/input_reference.md: paste `bipot describe --markdown " << name << "`";
+  }
+  EXPECT_NE(doc.find(LinearSolver::schema().markdown_table()), std::string::npos)
+      << "docs/input_reference.md: paste `bipot describe --markdown linear_solver`";
+}
+
+} // namespace
+} // namespace bipot
