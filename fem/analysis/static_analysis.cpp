@@ -87,10 +87,11 @@ struct StaticAnalysis::Impl {
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
          ++n)
       coords.insert(coords.end(), m.mesh.nodes[n].begin(), m.mesh.nodes[n].end());
-    // Axisymmetry too gets the plane-strain rigid modes: u_r = const costs only ε_θθ = u/r,
-    // small away from the axis, so it is a near-null mode AMG must see. Measured on a
-    // 200x50-cell cylinder wall (r in [1, 2]): CG + MueLu iterations with the axial mode
-    // alone / with the three modes: quad8 341 / 51, quad4 129 / 20.
+    // Axisymmetry too gets the three plane-strain rigid modes: u_r = const costs only
+    // ε_θθ = u/r, small away from the axis, so AMG must see it, and the in-plane rotation
+    // helps as well. CG + MueLu iterations on a 200x50-cell cylinder wall (r in [1, 2]),
+    // axial mode only / both translations / three modes: quad8 341 / 42 / 30 (1 rank),
+    // 57 / 49 with 2 ranks; quad4 129 / 18 / 13, 31 / 27 with 2 ranks.
     solver.set_near_null_space(dim, false, coords);
     if (!m.spec.initial_stress.empty())
       solid.set_initial_stress(initial_stress_function(m));

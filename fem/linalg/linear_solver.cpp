@@ -1,0 +1,318 @@
+#include "fem/linalg/linear_solver.hpp"
+
+#include "fem/core/error.hpp"
+#include "fem/linalg/communicator.hpp"
+#include "fem/linalg/detail/rooted_direct_solver.hpp"
+#include "fem/linalg/detail/tpetra_types.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosPseudoBlockCGSolMgr.hpp>
+#include <BelosPseudoBlockGmresSolMgr.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Ifpack2_Factory.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace bipot {
+
+namespace detail {
+void validate_linear_solver_options(const LinearSolverOptions& options);
+}
+
+namespace {
+
+using detail::CrsMatrix;
+using detail::GO;
+using detail::MultiVector;
+using detail::Operator;
+using Node = detail::Map::node_type;
+using MueLuOperator = MueLu::TpetraOperator<double, int, GO, Node>;
+using RowMatrix = Tpetra::RowMatrix<double, int, GO, Node>;
+using Ifpack2Preconditioner = Ifpack2::Preconditioner<double, int, GO, Node>;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string format_residual(double r) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6e", r);
+  return buf;
+}
+
+} // namespace
+
+struct LinearSolver::Impl {
+  // Near-null space as given (applied at the next MueLu build).
+  int nns_dim = 0;
+  bool nns_axisymmetric = false;
+  std::vector<double> nns_coords;
+  bool nns_changed = false;
+
+  Teuchos::RCP<CrsMatrix> A;           ///< the matrix of the last setup()
+  std::optional<DofDistribution> dist; ///< of the last setup() matrix
+  Teuchos::RCP<MueLuOperator> muelu;
+  Teuchos::RCP<Ifpack2Preconditioner> ifpack;
+  std::unique_ptr<detail::RootedDirectSolver> direct;
+  Teuchos::RCP<detail::Vector> b_work, x_work, r_work;
+  double setup_seconds = 0;
+
+  Teuchos::RCP<MultiVector> near_null_space(const SparseMatrix::Impl& m) const;
+};
+
+Teuchos::RCP<MultiVector> LinearSolver::Impl::near_null_space(const SparseMatrix::Impl& m) const {
+  const int dpn = m.dist.dofs_per_node();
+  const Index n_nodes = m.dist.num_owned_nodes();
+  if (dpn != nns_dim)
+    throw InputError("linear_solver: near-null space for dimension " + std::to_string(nns_dim) +
+                     " needs " + std::to_string(nns_dim) + " DOFs per node, the matrix has " +
+                     std::to_string(dpn));
+  if (static_cast<Index>(nns_coords.size()) != 3 * n_nodes)
+    throw InputError("linear_solver: near-null space got " + std::to_string(nns_coords.size()) +
+                     " coordinates, expected 3 per owned node (" + std::to_string(3 * n_nodes) +
+                     ")");
+  // Rotations about the global centroid: keeps them well separated from the translations
+  // when the mesh sits far from the origin.
+  double centre[3] = {0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    double local = 0;
+    for (Index i = 0; i < n_nodes; ++i)
+      local += nns_coords[3 * i + c];
+    const Index total = std::max<Index>(1, sum_all(n_nodes));
+    centre[c] = sum_all(local) / static_cast<double>(total);
+  }
+  // Axisymmetric: u_z = const is the only zero-energy mode, but u_r = const (energy from
+  // eps_thetatheta = u_r / r only) is a low-energy one that the coarse spaces must contain:
+  // without it, CG iterations doubled with each mesh refinement in our trials (32, 58, 111
+  // on 16x32 .. 64x128 cylinders), with it they stayed at 17-21.
+  const int n_modes = nns_axisymmetric ? 2 : (nns_dim == 2 ? 3 : 6);
+  auto modes = Teuchos::rcp(new MultiVector(m.row_map, n_modes, true));
+  for (int k = 0; k < n_modes; ++k) {
+    auto v = modes->getDataNonConst(k);
+    for (Index i = 0; i < n_nodes; ++i) {
+      const double x = nns_coords[3 * i] - centre[0];
+      const double y = nns_coords[3 * i + 1] - centre[1];
+      const double z = nns_coords[3 * i + 2] - centre[2];
+      double* u = v.getRawPtr() + dpn * i;
+      if (nns_axisymmetric || nns_dim == 2) {
+        if (k < 2)
+          u[k] = 1.0;
+        else
+          u[0] = -y, u[1] = x;
+      } else if (k < 3) {
+        u[k] = 1.0;
+      } else if (k == 3) {
+        u[1] = -z, u[2] = y; // rotation about x
+      } else if (k == 4) {
+        u[0] = z, u[2] = -x; // about y
+      } else {
+        u[0] = -y, u[1] = x; // about z
+      }
+    }
+  }
+  return modes;
+}
+
+LinearSolver::LinearSolver(const LinearSolverOptions& options)
+    : options_(options), impl_(std::make_unique<Impl>()) {
+  detail::validate_linear_solver_options(options_);
+}
+
+LinearSolver::~LinearSolver() = default;
+LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
+LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
+
+void LinearSolver::set_near_null_space(int dim, bool axisymmetric,
+                                       const std::vector<double>& owned_node_coords) {
+  if (dim != 2 && dim != 3)
+    throw InputError("linear_solver: near-null space dimension must be 2 or 3, got " +
+                     std::to_string(dim));
+  if (axisymmetric && dim != 2)
+    throw InputError("linear_solver: axisymmetric near-null space needs dimension 2");
+  impl_->nns_dim = dim;
+  impl_->nns_axisymmetric = axisymmetric;
+  impl_->nns_coords = owned_node_coords;
+  impl_->nns_changed = true;
+}
+
+void LinearSolver::setup(const SparseMatrix& matrix) {
+  const auto start = std::chrono::steady_clock::now();
+  auto& im = *impl_;
+  const SparseMatrix::Impl& m = *matrix.impl_;
+  if (m.assembling) throw Error("LinearSolver::setup: matrix assembly not finished");
+  // Holding the RCP keeps the old matrix alive, so equal pointers mean the same matrix.
+  const bool same_matrix = im.A.get() == m.matrix.get();
+  im.A = m.matrix;
+  im.dist = m.dist;
+  const auto& o = options_;
+  try {
+    if (o.method == "direct") {
+      if (!im.direct) im.direct = std::make_unique<detail::RootedDirectSolver>();
+      im.direct->factorize(im.A); // reuses the gathered structure for the same matrix
+    } else if (o.preconditioner == "muelu") {
+      if (same_matrix && !im.muelu.is_null() && !im.nns_changed) {
+        MueLu::ReuseTpetraPreconditioner(im.A, *im.muelu);
+      } else {
+        Teuchos::ParameterList p;
+        p.set("verbosity", o.verbose ? "low" : "none");
+        p.set("number of equations", m.dist.dofs_per_node());
+        p.set("multigrid algorithm", "sa");
+        p.set("coarse: max size", o.amg_coarse_size);
+        // Symmetric Gauss-Seidel: a symmetric smoother, as CG needs, and twice as effective
+        // as Chebyshev on stretched plane-strain meshes in our tests.
+        p.set("smoother: type", "RELAXATION");
+        p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+        // Amesos2 13.2 as packaged gives wrong solutions for a matrix spread over several
+        // ranks (see detail/rooted_direct_solver.hpp), which MueLu's KLU2 coarse solver
+        // would be in parallel: there, an incomplete LU with deep fill on each rank's block.
+        if (m.dist.size() > 1) {
+          p.set("coarse: type", "RILUK");
+          p.sublist("coarse: params").set("fact: iluk level-of-fill", 10);
+        }
+        // Keep aggregates and the tentative prolongator across refills: they depend on the
+        // graph and the near-null space only (no drop tolerance), so reuse is exact.
+        p.set("reuse: type", "tP");
+        if (im.nns_dim > 0) p.sublist("user data").set("Nullspace", im.near_null_space(m));
+        im.muelu = MueLu::CreateTpetraPreconditioner(Teuchos::RCP<Operator>(im.A), p);
+        im.nns_changed = false;
+      }
+    } else if (o.preconditioner == "ilu" || o.preconditioner == "jacobi") {
+      if (!same_matrix || im.ifpack.is_null()) {
+        Teuchos::ParameterList p;
+        if (o.preconditioner == "ilu") {
+          p.set("fact: iluk level-of-fill", 0);
+          im.ifpack = Ifpack2::Factory::create<RowMatrix>("RILUK", im.A);
+        } else {
+          p.set("relaxation: type", "Jacobi");
+          p.set("relaxation: sweeps", 1);
+          im.ifpack = Ifpack2::Factory::create<RowMatrix>("RELAXATION", im.A);
+        }
+        im.ifpack->setParameters(p);
+        im.ifpack->initialize();
+      }
+      im.ifpack->compute();
+    }
+  } catch (const std::exception& e) {
+    // Half-built state must not be used by solve(): require a successful setup() first.
+    im.A = Teuchos::null;
+    im.muelu = Teuchos::null;
+    im.ifpack = Teuchos::null;
+    im.direct.reset();
+    if (dynamic_cast<const Error*>(&e)) throw;
+    throw SolverError("linear solver setup (" + o.method + " + " + o.preconditioner +
+                      ") failed: " + e.what());
+  }
+  if (im.b_work.is_null() || !same_matrix) {
+    im.b_work = Teuchos::rcp(new detail::Vector(m.row_map));
+    im.x_work = Teuchos::rcp(new detail::Vector(m.row_map));
+    im.r_work = Teuchos::rcp(new detail::Vector(m.row_map));
+  }
+  im.setup_seconds = seconds_since(start);
+}
+
+LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVector& x) {
+  const auto start = std::chrono::steady_clock::now();
+  auto& im = *impl_;
+  if (im.A.is_null()) throw Error("LinearSolver::solve called before setup()");
+  const auto& dist = *im.dist;
+  if (b.distribution() != dist || x.distribution() != dist)
+    throw Error("LinearSolver::solve: vector distribution differs from the matrix's");
+  const auto& o = options_;
+  LinearSolveStats stats;
+  stats.setup_seconds = im.setup_seconds;
+
+  const double b_norm = b.norm2();
+  if (b_norm == 0.0) { // the solution is 0; relative residuals would divide by zero
+    x.set_zero();
+    stats.converged = true;
+    stats.solve_seconds = seconds_since(start);
+    return stats;
+  }
+  detail::copy_to_tpetra(b, *im.b_work);
+  detail::copy_to_tpetra(x, *im.x_work);
+  bool reached = false;
+  try {
+    if (o.method == "direct") {
+      im.direct->solve(b.owned_values(), x.owned_values());
+      detail::copy_to_tpetra(x, *im.x_work); // for the residual below
+    } else {
+      using Problem = Belos::LinearProblem<double, MultiVector, Operator>;
+      auto problem = Teuchos::rcp(new Problem(im.A, im.x_work, im.b_work));
+      Teuchos::RCP<Operator> prec;
+      if (!im.muelu.is_null() && o.preconditioner == "muelu")
+        prec = im.muelu;
+      else if (!im.ifpack.is_null() && o.preconditioner != "none")
+        prec = im.ifpack;
+      // CG needs a symmetric preconditioner on either side; GMRES on the right keeps its
+      // implicit residual equal to the true one.
+      if (!prec.is_null()) {
+        if (o.method == "cg")
+          problem->setLeftPrec(prec);
+        else
+          problem->setRightPrec(prec);
+      }
+      // A Krylov run can stop short of the tolerance with iterations to spare when its
+      // recursive residual drifts from the true one (GMRES "loss of accuracy"): restarting
+      // from the current iterate recomputes the true residual. Two restarts at most.
+      for (int attempt = 0; attempt < 3 && !reached && stats.iterations < o.max_iterations;
+           ++attempt) {
+        problem->setProblem(); // takes the current x as initial guess
+        auto params = Teuchos::rcp(new Teuchos::ParameterList);
+        params->set("Convergence Tolerance", o.tolerance);
+        params->set("Maximum Iterations", o.max_iterations - stats.iterations);
+        params->set("Implicit Residual Scaling", "Norm of RHS");
+        params->set("Verbosity", o.verbose ? Belos::Errors + Belos::Warnings +
+                                                 Belos::StatusTestDetails + Belos::FinalSummary
+                                           : Belos::Errors);
+        if (o.verbose) params->set("Output Frequency", 10);
+        Belos::ReturnType result;
+        if (o.method == "cg") {
+          Belos::PseudoBlockCGSolMgr<double, MultiVector, Operator> solver(problem, params);
+          result = solver.solve();
+          stats.iterations += solver.getNumIters();
+        } else {
+          const int remaining = o.max_iterations - stats.iterations;
+          params->set("Explicit Residual Scaling", "Norm of RHS");
+          params->set("Num Blocks", std::min(o.restart, remaining));
+          params->set("Maximum Restarts", remaining / o.restart + 1);
+          Belos::PseudoBlockGmresSolMgr<double, MultiVector, Operator> solver(problem, params);
+          result = solver.solve();
+          stats.iterations += solver.getNumIters();
+        }
+        reached = result == Belos::Converged;
+      }
+    }
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw SolverError("linear solver (" + o.method + " + " + o.preconditioner +
+                      ") failed: " + e.what());
+  }
+  detail::copy_from_tpetra(*im.x_work, x);
+
+  // The explicit residual: what the caller gets, whatever the Krylov method tracked.
+  im.A->apply(*im.x_work, *im.r_work);
+  im.r_work->update(1.0, *im.b_work, -1.0);
+  stats.relative_residual = im.r_work->norm2() / b_norm;
+  if (o.method == "direct") // accuracy is set by conditioning: the check is a sanity check
+    reached = std::isfinite(stats.relative_residual) &&
+              stats.relative_residual <= std::max(o.tolerance, 1e-6);
+  stats.solve_seconds = seconds_since(start);
+  if (!reached)
+    throw SolverError("linear solver (" + o.method + " + " + o.preconditioner +
+                      ") did not converge: " + std::to_string(stats.iterations) +
+                      " iterations (limit " + std::to_string(o.max_iterations) +
+                      "), relative residual " + format_residual(stats.relative_residual) +
+                      ", tolerance " + format_residual(o.tolerance) + ", " +
+                      std::to_string(dist.num_global_dofs()) + " unknowns");
+  stats.converged = true;
+  return stats;
+}
+
+} // namespace bipot

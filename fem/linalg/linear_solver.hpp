@@ -1,0 +1,87 @@
+#pragma once
+/// Krylov and direct solvers for SparseMatrix systems (Belos, MueLu, Ifpack2, Amesos2).
+
+#include "fem/core/parameter_schema.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bipot {
+
+class DistributedVector;
+class SparseMatrix;
+
+/// How a LinearSolver solves. Validated by LinearSolver's constructor; schema() describes the
+/// same keys for the YAML layer.
+struct LinearSolverOptions {
+  std::string method = "cg";            ///< cg | gmres | direct
+  std::string preconditioner = "muelu"; ///< muelu | ilu | jacobi | none (ignored by direct)
+  double tolerance = 1e-10;             ///< relative residual ||b - A x|| / ||b|| to reach
+  int max_iterations = 2000;            ///< Krylov iterations in all (restarts included)
+  int restart = 200;                    ///< GMRES Krylov subspace size before a restart
+  int amg_coarse_size = 1000;           ///< MueLu: stop coarsening below this many rows
+  bool verbose = false;                 ///< print Krylov convergence history (rank 0)
+
+  /// Options from a validated ParameterSet (keys of LinearSolver::schema()).
+  static LinearSolverOptions from_parameters(const ParameterSet& params);
+};
+
+/// Outcome of LinearSolver::solve().
+struct LinearSolveStats {
+  int iterations = 0;           ///< Krylov iterations (0 for direct)
+  double relative_residual = 0; ///< ||b - A x|| / ||b||, recomputed explicitly
+  double setup_seconds = 0;     ///< last setup(): preconditioner or factorisation
+  double solve_seconds = 0;
+  bool converged = false; ///< always true on return: failure throws
+};
+
+/// Solves A x = b for a SparseMatrix A with Belos "Pseudo Block CG" / "Pseudo Block GMRES"
+/// (right preconditioning for GMRES) or Amesos2 KLU2 (the matrix gathered on rank 0).
+/// Preconditioners: MueLu smoothed aggregation ("number of equations" = DOFs per node,
+/// near-null space from set_near_null_space(), symmetric Gauss-Seidel smoothing, KLU2 coarse
+/// solve on one rank and per-rank deep-fill ILU on several), Ifpack2 ILU(0) (RILUK, per rank),
+/// Ifpack2 Jacobi. The direct solver's tolerance check is loosened to max(tolerance, 1e-6):
+/// its accuracy is set by conditioning, not iterations.
+///
+/// Usage: setup(A) after each assembly of A, then solve() any number of times. The solver
+/// keeps a reference to A's values, so setup() must follow every refill. Calling setup() again
+/// after refilling the same matrix reuses MueLu's aggregates and tentative prolongator, and KLU2's
+/// symbolic factorisation.
+class LinearSolver {
+public:
+  /// Throws bipot::InputError listing every invalid option with the allowed values.
+  explicit LinearSolver(const LinearSolverOptions& options);
+  ~LinearSolver();
+  LinearSolver(LinearSolver&&) noexcept;
+  LinearSolver& operator=(LinearSolver&&) noexcept;
+
+  const LinearSolverOptions& options() const { return options_; }
+
+  /// Near-null space for MueLu. `dim` 2 or 3; `owned_node_coords` holds x, y, z of each
+  /// owned node in order (3 per node, z ignored in 2D). Plane strain: 2 translations and the
+  /// in-plane rotation; 3D: 3 translations and 3 rotations; axisymmetric (x = r, y = z): the
+  /// axial translation (the only zero-energy mode) and the radial one, u_r = const, whose
+  /// energy comes only from eps_thetatheta = u_r / r: without it multigrid convergence
+  /// degrades with mesh refinement. Takes effect at the next setup().
+  void set_near_null_space(int dim, bool axisymmetric,
+                           const std::vector<double>& owned_node_coords);
+
+  /// Builds the preconditioner or factorisation for A (collective).
+  void setup(const SparseMatrix& A);
+
+  /// Solves A x = b with x as initial guess (collective). Throws bipot::SolverError with
+  /// the iteration count and relative residual if the tolerance is not reached; x then
+  /// holds the last iterate.
+  LinearSolveStats solve(const DistributedVector& b, DistributedVector& x);
+
+  /// Keys, types, defaults and allowed values of LinearSolverOptions ("linear_solver").
+  static ParamSchema schema();
+
+private:
+  struct Impl;
+  LinearSolverOptions options_;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace bipot
