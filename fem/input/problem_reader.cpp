@@ -3,6 +3,7 @@
 #include "fem/core/error.hpp"
 #include "fem/input/detail/yaml_map.hpp"
 #include "fem/input/detail/sections.hpp"
+#include "contact/solver/contact_solver_options.hpp"
 #include "fem/linalg/linear_solver.hpp"
 
 #include <algorithm>
@@ -24,6 +25,9 @@ const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
       {"materials", "map region name -> {type: <material>, <its parameters>}"},
       {"linear_solver", "method, preconditioner, tolerance, ... (bipot describe linear_solver)"},
       {"initial_stress", "list of {region, type: geostatic|constant, ...}"},
+      {"interfaces", "list of {name, between: [body1, body2] | facet_sets: [a, b], law, "
+                     "parameters, initial_gap}"},
+      {"contact_solver", "type: semismooth_newton | bipotential_uzawa, and its options"},
       {"stages", "list of load stages: name, increments, boundary_conditions, loads"},
       {"output", "directory, vtk, every"},
   };
@@ -60,6 +64,10 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   }
 
   if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
+  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top);
+  if (top.has("contact_solver")) spec.contact_solver = input::read_contact_solver(top);
+  else validate(contact::contact_solvers().schema(spec.contact_solver.type),
+                spec.contact_solver.parameters);
   if (top.has("stages")) spec.stages = input::read_stages(top, dim);
   else top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);

@@ -67,6 +67,24 @@ struct StageSpec {
   std::string where;
 };
 
+/// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
+/// mesh, or `facet_sets: [a, b]` with coincident nodes.
+struct InterfaceSpec {
+  std::string name;
+  std::vector<std::string> between;    ///< two region names, or empty
+  std::vector<std::string> facet_sets; ///< two facet set names, or empty
+  std::string law;
+  ParameterSet parameters; ///< validated against the law's schema
+  double initial_gap = 0;  ///< m
+  std::string where;
+};
+
+struct ContactSolverSpec {
+  std::string type = "semismooth_newton";
+  ParameterSet parameters; ///< validated against the solver's schema
+  std::string where;
+};
+
 struct OutputSpec {
   std::string directory = "results";
   bool vtk = true;
@@ -80,6 +98,8 @@ struct ProblemSpec {
   std::vector<MaterialSpec> materials;
   ParameterSet linear_solver;          ///< validated against LinearSolver's schema
   std::vector<InitialStressSpec> initial_stress;
+  std::vector<InterfaceSpec> interfaces;
+  ContactSolverSpec contact_solver;
   std::vector<StageSpec> stages;
   OutputSpec output;
 };

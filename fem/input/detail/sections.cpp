@@ -1,6 +1,8 @@
 #include "fem/input/detail/sections.hpp"
 
 #include "fem/core/nearest_name.hpp"
+#include "contact/laws/interface_law_registry.hpp"
+#include "contact/solver/contact_solver_options.hpp"
 #include "materials/material_registry.hpp"
 
 #include <algorithm>
@@ -293,6 +295,71 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
     out.push_back(std::move(st));
   }
   return out;
+}
+
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
+  std::vector<InterfaceSpec> out;
+  const YAML::Node list = top.node("interfaces");
+  if (!list.IsSequence()) {
+    top.error("interfaces", "expected a list of {name, between | facet_sets, law, parameters}");
+    return out;
+  }
+  const auto& laws = contact::interface_laws();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    InterfaceSpec spec;
+    const std::string path = index_path("interfaces", i);
+    YamlMap m(list[i], path, top.diag(),
+              {"name", "between", "facet_sets", "law", "parameters", "initial_gap"});
+    if (!m.valid()) continue;
+    spec.where = top.diag().where(list[i], path);
+    spec.name = "interface" + std::to_string(i + 1);
+    m.string("name", spec.name);
+    m.strings("between", spec.between);
+    m.strings("facet_sets", spec.facet_sets);
+    if (m.has("between") == m.has("facet_sets"))
+      m.error("between", "give exactly one of 'between: [region_a, region_b]' or "
+                         "'facet_sets: [set_a, set_b]'");
+    else if (m.has("between") && spec.between.size() != 2)
+      m.error("between", "expected two region names [body 1, body 2]");
+    else if (m.has("facet_sets") && spec.facet_sets.size() != 2)
+      m.error("facet_sets", "expected two facet set names [body 1 side, body 2 side]");
+    m.real("initial_gap", spec.initial_gap);
+    if (m.string("law", spec.law, true) && m.has("law")) {
+      if (!laws.contains(spec.law)) {
+        m.error("law", laws.unknown_message(spec.law));
+        continue;
+      }
+      if (m.has("parameters"))
+        spec.parameters = read_parameters(m, "parameters", laws.schema(spec.law), {});
+      else {
+        const auto problems = validate(laws.schema(spec.law), spec.parameters);
+        for (const auto& p : problems)
+          m.error("law", "parameters." + p.key + ": " + p.message);
+      }
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+ContactSolverSpec read_contact_solver(const YamlMap& top) {
+  ContactSolverSpec spec;
+  const auto& solvers = contact::contact_solvers();
+  const YAML::Node node = top.node("contact_solver");
+  spec.where = top.where("contact_solver");
+  if (!node.IsMap() || !node["type"]) {
+    top.error("contact_solver", "expected {type: <solver>, ...}; registered solvers: " +
+                                    join_names(solvers.names()));
+    return spec;
+  }
+  spec.type = node["type"].Scalar();
+  if (!solvers.contains(spec.type)) {
+    top.diag().error(node["type"], "contact_solver.type", solvers.unknown_message(spec.type));
+    return spec;
+  }
+  spec.parameters = read_parameters_node(node, "contact_solver", top.diag(),
+                                         solvers.schema(spec.type), {"type"});
+  return spec;
 }
 
 OutputSpec read_output(const YamlMap& top) {

@@ -13,6 +13,8 @@ std::vector<MaterialSpec> read_materials(const YamlMap& top);
 std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
 std::vector<StageSpec> read_stages(const YamlMap& top, int dim);
 OutputSpec read_output(const YamlMap& top);
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top);
+ContactSolverSpec read_contact_solver(const YamlMap& top);
 
 /// Reads the map at `parent[key]` as parameters of `schema` (keys in `skip` are left to the
 /// caller), decoding each value by its declared type, validating ranges, filling defaults,

@@ -1,0 +1,76 @@
+#include "contact/solver/contact_solver_options.hpp"
+
+namespace bipot::contact {
+
+namespace {
+
+void common_keys(ParamSchema& s, double default_factor) {
+  s.real("augmentation", "kN/m^3",
+         "augmentation parameter rho of the projection; 0 = automatic per pair (interface "
+         "stiffness of the law, or the local contact flexibility 1/W_ii)")
+      .non_negative()
+      .with_default(0.0);
+  s.real("augmentation_factor", "", "multiplies the automatic rho")
+      .positive()
+      .with_default(default_factor);
+  s.real("tolerance", "", "relative tolerance on the force residual and the multiplier change")
+      .positive()
+      .less_than(1.0)
+      .with_default(1e-8);
+  s.integer("max_cutbacks", "halvings of a non-converging increment before the run stops")
+      .at_least(0)
+      .with_default(6L);
+  s.boolean("line_search", "backtracking line search on the residual norm (globalisation)")
+      .with_default(true);
+}
+
+ContactSolverOptions from(const std::string& type, const ParameterSet& p) {
+  ContactSolverOptions o;
+  o.type = type;
+  o.augmentation = p.real("augmentation");
+  o.augmentation_factor = p.real("augmentation_factor");
+  o.tolerance = p.real("tolerance");
+  o.max_cutbacks = static_cast<int>(p.integer("max_cutbacks"));
+  o.line_search = p.boolean("line_search");
+  o.max_iterations = static_cast<int>(p.integer("max_iterations"));
+  if (p.has("max_outer_iterations"))
+    o.max_outer_iterations = static_cast<int>(p.integer("max_outer_iterations"));
+  return o;
+}
+
+} // namespace
+
+const Registry<ContactSolverOptions>& contact_solvers() {
+  static const Registry<ContactSolverOptions> registry = [] {
+    Registry<ContactSolverOptions> r("contact solver");
+    ParamSchema newton("semismooth_newton",
+                       "generalized Newton on equilibrium and the bipotential fixed point, "
+                       "multiplier updated every iteration (Alart-Curnier, condensed)");
+    // A larger rho makes the condensed multiplier update contract faster (rate ~ k/(k+rho)).
+    common_keys(newton, 100.0);
+    newton.integer("max_iterations", "Newton iterations per increment").at_least(1).with_default(50L);
+    r.add(newton, [](const ParameterSet& p) {
+      return std::make_unique<ContactSolverOptions>(from("semismooth_newton", p));
+    });
+    ParamSchema uzawa("bipotential_uzawa",
+                      "the seed's Uzawa predictor-corrector on the bipotential projection, "
+                      "alternated with equilibrium solves at fixed multipliers");
+    // Uzawa is stable for rho below ~2/lambda_max(W): the automatic rho is 1/W_ii.
+    common_keys(uzawa, 1.0);
+    uzawa.integer("max_iterations", "Newton iterations per equilibrium solve").at_least(1).with_default(30L);
+    uzawa.integer("max_outer_iterations", "Uzawa multiplier updates per increment")
+        .at_least(1)
+        .with_default(2000L);
+    r.add(uzawa, [](const ParameterSet& p) {
+      return std::make_unique<ContactSolverOptions>(from("bipotential_uzawa", p));
+    });
+    return r;
+  }();
+  return registry;
+}
+
+ContactSolverOptions default_contact_solver() {
+  return *contact_solvers().create("semismooth_newton", ParameterSet{});
+}
+
+} // namespace bipot::contact

@@ -1,0 +1,41 @@
+#pragma once
+/// How interfaces are enforced (the *solver*), chosen in YAML apart from the *law*.
+///
+/// Both solvers iterate the bipotential fixed point r = Proj_{K_μ̄}(r − ρ[Δg_t + (g_n +
+/// μ̄‖Δg_t‖) n]) of formulation.md §4 together with bulk equilibrium. Inside each bulk solve
+/// the interface force t(u; r̂) = Proj(r̂ − ρ G(u)) − β(u)² C g(u) is linearised in u with
+/// the projection's generalized Jacobian (a semi-smooth Newton step at fixed multiplier r̂).
+/// - bipotential_uzawa (the seed's algorithm): r̂ is frozen until equilibrium is reached,
+///   then updated by the predictor–corrector r̂ ← Proj(τ); repeated until r̂ stops changing.
+///   The matrix is rebuilt and refactored only when the interface tangent changed.
+/// - semismooth_newton (Alart–Curnier with the multiplier condensed): r̂ ← Proj(τ) after
+///   every Newton iteration, so equilibrium and the contact law converge together.
+
+#include "fem/core/parameter_schema.hpp"
+#include "fem/core/registry.hpp"
+
+#include <string>
+
+namespace bipot::contact {
+
+struct ContactSolverOptions {
+  std::string type = "semismooth_newton";
+  double augmentation = 0;        ///< ρ (kN/m³); 0 = automatic per pair
+  double augmentation_factor = 1; ///< multiplies the automatic ρ
+  double tolerance = 1e-8;        ///< on the force residual and on the multiplier change
+  int max_iterations = 50;        ///< Newton iterations (inner ones for Uzawa)
+  int max_outer_iterations = 1;   ///< Uzawa multiplier updates per increment
+  int max_cutbacks = 6;           ///< halvings of a failing increment before the run stops
+  bool line_search = true;        ///< backtracking on the residual norm
+
+  bool uzawa() const { return type == "bipotential_uzawa"; }
+};
+
+/// The solvers by YAML name, each with its parameter schema (for validation and docs).
+/// Registry entries build a ContactSolverOptions from validated parameters.
+const Registry<ContactSolverOptions>& contact_solvers();
+
+/// Options of the default solver (semismooth_newton with its defaults).
+ContactSolverOptions default_contact_solver();
+
+} // namespace bipot::contact
