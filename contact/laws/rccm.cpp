@@ -48,13 +48,7 @@ Rccm::Rccm(double normal_stiffness, double tangential_stiffness, double decohesi
   given.set("friction_coefficient", mu_);
   given.set("adhesion_viscosity", alpha_);
   given.set("initial_adhesion", beta0_);
-  const auto problems = validate(schema(), given);
-  if (!problems.empty()) {
-    std::vector<std::string> lines;
-    for (const auto& p : problems)
-      lines.push_back("rccm." + p.key + ": " + p.message);
-    throw InputError(lines);
-  }
+  validate_or_throw(schema(), given);
 }
 
 double Rccm::update_adhesion(double beta_old, const LocalVector& jump, double dtau,

@@ -259,4 +259,12 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
   return problems;
 }
 
+void validate_or_throw(const ParamSchema& schema, ParameterSet& given) {
+  const auto problems = validate(schema, given);
+  if (problems.empty()) return;
+  std::vector<std::string> lines;
+  for (const auto& p : problems) lines.push_back(schema.name() + "." + p.key + ": " + p.message);
+  throw InputError(lines);
+}
+
 } // namespace bipot

@@ -109,6 +109,10 @@ struct ParamProblem {
 /// An integer given where a real is expected is accepted and converted.
 std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& given);
 
+/// validate(), then throws InputError listing every problem as "<schema>.<key>: message".
+/// For objects built from code rather than from an input file.
+void validate_or_throw(const ParamSchema& schema, ParameterSet& given);
+
 /// Formats a value for messages ("1e+30", "true", "\"abc\"").
 std::string format_value(const ParamValue& value);
 

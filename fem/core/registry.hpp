@@ -48,12 +48,7 @@ public:
   /// every problem found.
   std::unique_ptr<Base> create(const std::string& name, ParameterSet params) const {
     const Entry& e = entry(name);
-    const auto problems = validate(e.schema, params);
-    if (!problems.empty()) {
-      std::vector<std::string> lines;
-      for (const auto& p : problems) lines.push_back(name + "." + p.key + ": " + p.message);
-      throw InputError(lines);
-    }
+    validate_or_throw(e.schema, params);
     return e.factory(params);
   }
 

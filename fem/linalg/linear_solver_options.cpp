@@ -68,12 +68,7 @@ namespace detail {
 // Declared in linear_solver.cpp: throws InputError with every invalid option, one per line.
 void validate_linear_solver_options(const LinearSolverOptions& options) {
   ParameterSet given = to_parameters(options);
-  const auto problems = validate(LinearSolver::schema(), given);
-  if (problems.empty()) return;
-  std::vector<std::string> lines;
-  for (const auto& p : problems)
-    lines.push_back("linear_solver." + p.key + ": " + p.message);
-  throw InputError(lines);
+  validate_or_throw(LinearSolver::schema(), given);
 }
 } // namespace detail
 
