@@ -1,0 +1,264 @@
+#include "contact/interface/interface_mesh.hpp"
+
+#include "contact/interface/coincident_nodes.hpp"
+#include "contact/interface/detail/mesh_splitter.hpp"
+#include "contact/interface/pair_geometry.hpp"
+#include "fem/core/error.hpp"
+#include "fem/core/nearest_name.hpp"
+#include "fem/mesh/cell_facets.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iterator>
+#include <set>
+
+namespace bipot::contact {
+
+namespace {
+
+std::string prefix(const InterfaceDefinition& d) {
+  return (d.where.empty() ? std::string() : d.where + ": ") + "interface '" + d.name + "': ";
+}
+
+std::string node_at(const Mesh& mesh, Index id) {
+  const auto& x = mesh.nodes[id];
+  char buf[96];
+  if (mesh.dim == 2)
+    std::snprintf(buf, sizeof buf, " (%.9g, %.9g)", x[0], x[1]);
+  else
+    std::snprintf(buf, sizeof buf, " (%.9g, %.9g, %.9g)", x[0], x[1], x[2]);
+  return "node " + std::to_string(id) + buf;
+}
+
+template <class Map> std::vector<std::string> keys_of(const Map& m) {
+  std::vector<std::string> out;
+  for (const auto& kv : m)
+    out.push_back(kv.first);
+  return out;
+}
+
+/// "no region named 'x' in the mesh (did you mean 'y'?); regions: a, b".
+std::string unknown(const std::string& kind, const std::string& name,
+                    const std::vector<std::string>& known) {
+  std::string msg = "no " + kind + " named '" + name + "' in the mesh";
+  const std::string near = nearest_name(name, known);
+  if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+  return msg + "; " + kind + "s: " + (known.empty() ? std::string("none") : join_names(known));
+}
+
+/// Validation of one definition's names; fills the region-mode facets (original ids).
+void check_definition(const Mesh& mesh, const InterfaceDefinition& d, std::vector<Facet>& facets,
+                      std::vector<std::string>& problems) {
+  const std::string p = prefix(d);
+  const bool regions = !d.region_a.empty() || !d.region_b.empty();
+  const bool sets = !d.facet_set_a.empty() || !d.facet_set_b.empty();
+  if (regions && sets) {
+    problems.push_back(p + "give either two regions (between) or two facet sets, not both");
+    return;
+  }
+  if (!regions && !sets) {
+    problems.push_back(p + "give two regions (between: [a, b]) or two facet sets");
+    return;
+  }
+  const std::string kind = regions ? "region" : "facet set";
+  const std::string a = regions ? d.region_a : d.facet_set_a;
+  const std::string b = regions ? d.region_b : d.facet_set_b;
+  if (a.empty() || b.empty()) {
+    problems.push_back(p + "needs two " + kind + "s, got only '" + (a.empty() ? b : a) + "'");
+    return;
+  }
+  const auto known = regions ? keys_of(mesh.regions) : keys_of(mesh.facet_sets);
+  bool ok = true;
+  for (const std::string& name : {a, b})
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      problems.push_back(p + unknown(kind, name, known));
+      ok = false;
+    }
+  if (!ok) return;
+  if (a == b) {
+    problems.push_back(p + "the two " + kind + "s are both '" + a + "'");
+    return;
+  }
+  if (!regions) return;
+  facets = region_interface_facets(mesh, mesh.regions.at(a), mesh.regions.at(b));
+  if (facets.empty()) problems.push_back(p + "regions '" + a + "' and '" + b + "' do not touch");
+}
+
+/// Reverses a facet's orientation (mid-nodes follow their edges).
+void flip(Facet& f) {
+  std::vector<Index>& n = f.nodes;
+  switch (f.type) {
+  case CellType::Line2:
+  case CellType::Line3:
+    std::swap(n[0], n[1]);
+    break;
+  case CellType::Tri3:
+    std::swap(n[1], n[2]);
+    break;
+  case CellType::Tri6: // 0 2 1 | edges 02 21 10
+    n = {n[0], n[2], n[1], n[5], n[4], n[3]};
+    break;
+  case CellType::Quad4:
+    std::swap(n[1], n[3]);
+    break;
+  case CellType::Quad8: // 0 3 2 1 | edges 03 32 21 10
+    n = {n[0], n[3], n[2], n[1], n[7], n[6], n[5], n[4]};
+    break;
+  default:
+    break;
+  }
+}
+
+/// Cells using each node.
+std::vector<std::vector<Index>> cells_of_nodes(const Mesh& mesh) {
+  std::vector<std::vector<Index>> out(mesh.nodes.size());
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (int k = 0; k < mesh.cell_num_nodes(c); ++k)
+      out[mesh.cell(c)[k]].push_back(c);
+  return out;
+}
+
+/// Gives a facet without a cell the cell holding its corners and orients it outward of it.
+/// Returns false if no cell holds it.
+bool orient_orphan(const Mesh& mesh, const std::vector<std::vector<Index>>& cells_of_node,
+                   Facet& f) {
+  const int corners = num_corners(f.type);
+  for (Index c : cells_of_node[f.nodes[0]]) {
+    const Index* begin = mesh.cell(c);
+    const Index* end = begin + mesh.cell_num_nodes(c);
+    bool all = true;
+    for (int i = 0; i < corners && all; ++i)
+      all = std::find(begin, end, f.nodes[i]) != end;
+    if (!all) continue;
+    std::array<double, 3> d{0, 0, 0};
+    const int cc = num_corners(mesh.cell_types[c]);
+    for (int k = 0; k < cc; ++k)
+      for (int i = 0; i < 3; ++i)
+        d[i] -= mesh.nodes[begin[k]][i] / cc;
+    for (int k = 0; k < corners; ++k)
+      for (int i = 0; i < 3; ++i)
+        d[i] += mesh.nodes[f.nodes[k]][i] / corners;
+    const auto n = facet_normal(mesh, f);
+    if (n[0] * d[0] + n[1] * d[1] + n[2] * d[2] < 0) flip(f);
+    f.cell = c;
+    return true;
+  }
+  return false;
+}
+
+/// The facet-set mode: pairs the coincident nodes of two facet sets.
+Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
+                          std::vector<std::string>& problems) {
+  const std::string p = prefix(d);
+  const std::string& sa = d.facet_set_a;
+  const std::string& sb = d.facet_set_b;
+  Interface iface;
+  iface.name = d.name;
+  iface.initial_gap = d.initial_gap;
+  const std::vector<Index> nodes_a = mesh.facet_set_nodes(sa), nodes_b = mesh.facet_set_nodes(sb);
+  std::vector<Index> common;
+  std::set_intersection(nodes_a.begin(), nodes_a.end(), nodes_b.begin(), nodes_b.end(),
+                        std::back_inserter(common));
+  if (!common.empty()) {
+    problems.push_back(p + "facet sets '" + sa + "' and '" + sb + "' share " +
+                       std::to_string(common.size()) + " node(s), e.g. " +
+                       node_at(mesh, common[0]) +
+                       "; their nodes must be distinct (use between: [a, b] for regions of a "
+                       "conforming mesh)");
+    return iface;
+  }
+  const double diagonal = bounding_box_diagonal(mesh);
+  const double tol = 1e-9 * (diagonal > 0 ? diagonal : 1.0);
+  const std::vector<Index> partner = match_coincident_nodes(mesh, nodes_a, nodes_b, tol);
+  std::vector<Index> lonely_a, lonely_b;
+  std::set<Index> used;
+  for (std::size_t i = 0; i < nodes_a.size(); ++i) {
+    if (partner[i] < 0)
+      lonely_a.push_back(nodes_a[i]);
+    else
+      used.insert(partner[i]);
+  }
+  for (Index b : nodes_b)
+    if (!used.count(b)) lonely_b.push_back(b);
+  if (!lonely_a.empty() || !lonely_b.empty()) {
+    char tol_text[32];
+    std::snprintf(tol_text, sizeof tol_text, "%.3g", tol);
+    std::string msg = p + "facet sets '" + sa + "' and '" + sb + "' do not match within " +
+                      tol_text + " m: " + std::to_string(lonely_a.size()) + " of " +
+                      std::to_string(nodes_a.size()) + " nodes of '" + sa + "' and " +
+                      std::to_string(lonely_b.size()) + " of " + std::to_string(nodes_b.size()) +
+                      " nodes of '" + sb + "' have no coincident partner";
+    const bool on_a = !lonely_a.empty();
+    const std::vector<Index>& lonely = on_a ? lonely_a : lonely_b;
+    msg += "; first of '" + (on_a ? sa : sb) + "': ";
+    for (std::size_t i = 0; i < std::min<std::size_t>(5, lonely.size()); ++i)
+      msg += (i ? ", " : "") + node_at(mesh, lonely[i]);
+    problems.push_back(msg);
+    return iface;
+  }
+  for (std::size_t i = 0; i < nodes_a.size(); ++i) {
+    InterfacePair pair;
+    pair.node_a = nodes_a[i];
+    pair.node_b = partner[i];
+    iface.pairs.push_back(pair);
+  }
+  iface.facets_a = mesh.facet_sets.at(sa);
+  std::vector<std::vector<Index>> cells_of_node; // built on the first facet without a cell
+  for (Facet& f : iface.facets_a) {
+    if (f.cell >= 0) continue;
+    if (cells_of_node.empty()) cells_of_node = cells_of_nodes(mesh);
+    if (!orient_orphan(mesh, cells_of_node, f)) {
+      problems.push_back(p + "a facet of set '" + sa + "' (corner " + node_at(mesh, f.nodes[0]) +
+                         ") is not a facet of any cell");
+      break;
+    }
+  }
+  return iface;
+}
+
+} // namespace
+
+std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
+                                        const std::vector<InterfaceDefinition>& defs,
+                                        bool tie_only) {
+  if (spatial_dim(kin) != mesh.dim)
+    throw Error("split_interfaces: " + to_string(kin) + " kinematics on a " +
+                std::to_string(mesh.dim) + "D mesh");
+  std::vector<std::string> problems;
+  std::vector<std::vector<Facet>> facets(defs.size());
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < defs.size(); ++i) {
+    if (!names.insert(defs[i].name).second)
+      problems.push_back(prefix(defs[i]) + "another interface has the same name");
+    check_definition(mesh, defs[i], facets[i], problems);
+  }
+  if (!problems.empty()) throw InputError(problems);
+
+  // Work on a copy so that `mesh` is unchanged if a later problem throws.
+  Mesh work = mesh;
+  std::vector<Interface> out(defs.size());
+  detail::MeshSplitter splitter(work);
+  for (std::size_t i = 0; i < defs.size(); ++i) {
+    const InterfaceDefinition& d = defs[i];
+    if (d.region_a.empty()) continue;
+    out[i].name = d.name;
+    out[i].initial_gap = d.initial_gap;
+    splitter.split(facets[i], work.regions.at(d.region_a), work.regions.at(d.region_b), tie_only,
+                   out[i]);
+  }
+  // Facet-set interfaces last, on the final node ids.
+  for (std::size_t i = 0; i < defs.size(); ++i)
+    if (defs[i].region_a.empty()) out[i] = pair_facet_sets(work, defs[i], problems);
+  if (!problems.empty()) throw InputError(problems);
+
+  for (std::size_t i = 0; i < defs.size(); ++i) {
+    Interface& iface = out[i];
+    std::sort(iface.pairs.begin(), iface.pairs.end(),
+              [](const InterfacePair& x, const InterfacePair& y) { return x.node_a < y.node_a; });
+    compute_pair_geometry(work, kin, iface, prefix(defs[i]));
+  }
+  mesh = std::move(work);
+  return out;
+}
+
+} // namespace bipot::contact
