@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include "fem/core/nearest_name.hpp"
+#include "contact/laws/interface_law_registry.hpp"
 #include "fem/gmsh/gmsh_reader.hpp"
 #include "fem/mesh/structured_mesh.hpp"
 #include "materials/material_registry.hpp"
@@ -31,6 +32,38 @@ std::string unknown_set(const std::string& kind, const std::string& name,
   const auto near = nearest_name(name, known);
   if (!near.empty()) msg += " (did you mean '" + near + "'?)";
   return msg + "; available: " + (known.empty() ? std::string("none") : join_names(known));
+}
+
+// Splits the mesh along every interface: tied ones (perfect bonding) keep their shared nodes,
+// the others get the body-2 side's nodes duplicated and paired.
+void split_interfaces(Model& model) {
+  const auto& laws = contact::interface_laws();
+  std::vector<contact::InterfaceDefinition> tied, split;
+  std::vector<bool> is_tied;
+  for (const auto& spec : model.spec.interfaces) {
+    model.interface_laws.push_back(laws.create(spec.law, spec.parameters));
+    contact::InterfaceDefinition def;
+    def.name = spec.name;
+    if (spec.between.size() == 2) {
+      def.region_a = spec.between[0];
+      def.region_b = spec.between[1];
+    } else if (spec.facet_sets.size() == 2) {
+      def.facet_set_a = spec.facet_sets[0];
+      def.facet_set_b = spec.facet_sets[1];
+    }
+    def.initial_gap = spec.initial_gap;
+    def.where = spec.where;
+    is_tied.push_back(model.interface_laws.back()->is_tied());
+    (is_tied.back() ? tied : split).push_back(def);
+  }
+  auto tied_ifaces = contact::split_interfaces(model.mesh, model.kinematics, tied, true);
+  auto split_ifaces = contact::split_interfaces(model.mesh, model.kinematics, split, false);
+  std::size_t it = 0, is = 0;
+  for (bool t : is_tied)
+    model.interfaces.push_back(std::move(t ? tied_ifaces[it++] : split_ifaces[is++]));
+  model.contact_solver =
+      *contact::contact_solvers().create(model.spec.contact_solver.type,
+                                         model.spec.contact_solver.parameters);
 }
 
 } // namespace
@@ -115,6 +148,7 @@ Model build_model(const ProblemSpec& spec) {
     if (!mesh.regions.count(s.region))
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
   if (!problems.empty()) throw InputError(problems);
+  split_interfaces(model);
   return model;
 }
 

@@ -1,6 +1,9 @@
 #pragma once
 /// A problem ready to solve: the validated input, its mesh and its materials.
 
+#include "contact/interface/interface_mesh.hpp"
+#include "contact/laws/interface_law.hpp"
+#include "contact/solver/contact_solver_options.hpp"
 #include "fem/element/kinematics.hpp"
 #include "fem/input/problem_spec.hpp"
 #include "fem/mesh/mesh.hpp"
@@ -17,12 +20,16 @@ struct Model {
   Mesh mesh;
   std::vector<std::unique_ptr<Material>> materials; ///< owned, one per materials entry
   std::vector<const Material*> material_of_region;  ///< indexed by mesh region id
+  std::vector<contact::Interface> interfaces;        ///< split and paired, in input order
+  std::vector<std::unique_ptr<contact::InterfaceLaw>> interface_laws; ///< one per interface
+  contact::ContactSolverOptions contact_solver;
 };
 
 /// Builds the mesh (generator or Gmsh file) and the materials, then checks everything that
 /// needs the mesh: every region has a material and every material a region, every set named
 /// by a boundary condition or load exists (with the nearest names), axisymmetric meshes have
-/// r ≥ 0. Throws InputError listing every problem with the user's file:line:col.
+/// r ≥ 0. Then splits the mesh along each interface (perfect bonding keeps shared nodes).
+/// Throws InputError listing every problem with the user's file:line:col.
 Model build_model(const ProblemSpec& spec);
 
 /// The mesh described by a MeshSpec (no checks against the rest of the input).

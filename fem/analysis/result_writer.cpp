@@ -5,6 +5,7 @@
 #include "fem/linalg/communicator.hpp"
 
 #include <filesystem>
+#include <map>
 #include <set>
 
 namespace bipot {
@@ -27,6 +28,29 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size)
   if (model.spec.output.vtk)
     vtk_ = std::make_unique<VtkSeriesWriter>(directory_, "solution", rank, size);
   if (rank == 0) {
+    for (const auto& iface : model.interfaces) {
+      // The interface mesh: one node per pair (at node a), the body-1 facets as cells.
+      Mesh m;
+      m.dim = model.mesh.dim;
+      std::map<Index, Index> pair_of_node;
+      for (const auto& p : iface.pairs) {
+        pair_of_node[p.node_a] = static_cast<Index>(m.nodes.size());
+        m.nodes.push_back(model.mesh.nodes[p.node_a]);
+      }
+      const int region = m.region_id(iface.name);
+      for (const auto& f : iface.facets_a) {
+        std::vector<Index> ids;
+        for (Index n : f.nodes) ids.push_back(pair_of_node.at(n));
+        m.add_cell(f.type, ids, region);
+      }
+      interface_meshes_.push_back(std::move(m));
+      interface_vtk_.push_back(std::make_unique<VtkSeriesWriter>(
+          directory_, "interface_" + iface.name, 0, 1));
+      std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
+      for (const auto& c : component_names(model)) cols.push_back("force_" + c);
+      interface_csv_.push_back(
+          std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
+    }
     std::vector<std::string> columns = {"stage", "step", "time", "load_factor"};
     for (const auto& s : reaction_sets_)
       for (const auto& c : component_names(model)) columns.push_back(s + "_f" + c);
@@ -45,6 +69,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   for (const auto& s : reaction_sets_)
     for (double f : analysis.reaction(s)) row.push_back(f);
   if (reactions_) reactions_->write_row(row);
+  if (rank_ == 0) write_interfaces(report, analysis);
 
   const bool due = report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
   if (!vtk_ || !due) return;
@@ -58,6 +83,41 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   vtk_->write_step(report.time, model_.mesh, cells, {displacement},
                    {Field{"strain", nv, strain}, Field{"stress", nv, stress}, owner});
   barrier();
+}
+
+void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis) {
+  const int dim = spatial_dim(model_.kinematics);
+  for (std::size_t k = 0; k < interface_csv_.size(); ++k) {
+    const auto& ia = *analysis.interfaces()[k];
+    std::vector<double> row = {static_cast<double>(report.stage_index + 1),
+                               static_cast<double>(report.step), report.time,
+                               report.load_factor};
+    const auto f = ia.resultant();
+    for (int c = 0; c < dim; ++c) row.push_back(f[c]);
+    interface_csv_[k]->write_row(row);
+
+    const auto& results = ia.results();
+    const std::size_t n = results.size();
+    Field tn{"normal_traction", 1, {}}, tt{"tangential_traction", dim - 1, {}},
+        p{"contact_pressure", 1, {}}, gn{"opening", 1, {}}, gt{"slip", dim - 1, {}},
+        beta{"beta", 1, {}}, status{"status", 1, {}};
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& r = results[i];
+      tn.values.push_back(r.traction(0));
+      p.values.push_back(r.r(0));
+      gn.values.push_back(r.jump(0));
+      for (int c = 1; c < dim; ++c) {
+        tt.values.push_back(r.traction(c));
+        gt.values.push_back(r.jump(c));
+      }
+      beta.values.push_back(r.beta);
+      status.values.push_back(static_cast<double>(r.status)); // 0 open, 1 stick, 2 slip
+    }
+    std::vector<Index> cells(interface_meshes_[k].num_cells());
+    for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c) cells[c] = c;
+    interface_vtk_[k]->write_step(report.time, interface_meshes_[k], cells,
+                                  {tn, tt, p, gn, gt, beta, status}, {});
+  }
 }
 
 } // namespace bipot

@@ -1,7 +1,9 @@
 #pragma once
 /// Writes the results of every converged increment: a VTK time series of the bulk
-/// (displacement, strain, stress, owning rank; the writer adds the region id) and a CSV of reaction forces per
-/// supported set. Files are complete after each step, so an interrupted run keeps every
+/// (displacement, strain, stress, owning rank; the writer adds the region id), a CSV of
+/// reaction forces per supported set, and per interface a VTK series of its line/surface
+/// mesh (tractions, contact pressure, opening, slip, β, status) and a CSV of the resultant
+/// force body 1 exerts on body 2. Files are complete after each step, so an interrupted run keeps every
 /// converged increment readable.
 
 #include "fem/analysis/model.hpp"
@@ -31,12 +33,18 @@ public:
   std::string pvd_path() const;
 
 private:
+  void write_interfaces(const StepReport& report, const StaticAnalysis& analysis);
+
   const Model& model_;
   std::string directory_;
   int rank_;
   std::vector<std::string> reaction_sets_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
   std::unique_ptr<CsvWriter> reactions_;
+  // Per interface (rank 0): its line/surface mesh (nodes = pairs), VTK series and CSV.
+  std::vector<Mesh> interface_meshes_;
+  std::vector<std::unique_ptr<VtkSeriesWriter>> interface_vtk_;
+  std::vector<std::unique_ptr<CsvWriter>> interface_csv_;
 };
 
 } // namespace bipot

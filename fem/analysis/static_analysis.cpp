@@ -63,13 +63,20 @@ struct StaticAnalysis::Impl {
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
+  std::vector<std::unique_ptr<contact::InterfaceAssembler>> interfaces;
+  bool has_contact = false; ///< some interface is not tied: the tangent changes
   std::unique_ptr<SparseMatrix> K;
   DistributedVector R, du, F_prev, F_cur, F_step, reaction;
   LinearSolver solver;
   std::vector<double> u;
   std::vector<double> reaction_all;
   bool linear;
+  bool matrix_ready = false; ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
+  RunSummary summary;
+
+  // Boundary-condition targets of the current stage and the values they start from.
+  std::map<Index, double> target, start;
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
@@ -80,8 +87,14 @@ struct StaticAnalysis::Impl {
         F_cur(dist), F_step(dist), reaction(dist),
         solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)),
         u(dofs.num_dofs(), 0.0), linear(all_linear(m)) {
+    for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
+      interfaces.push_back(std::make_unique<contact::InterfaceAssembler>(
+          m.interfaces[k], *m.interface_laws[k], dofs, dist));
+      has_contact = has_contact || !interfaces.back()->tied();
+    }
     SparsityPattern pattern;
     solid.add_to_pattern(pattern);
+    for (const auto& ia : interfaces) ia->add_to_pattern(pattern);
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
@@ -93,9 +106,20 @@ struct StaticAnalysis::Impl {
     // axial mode only / both translations / three modes: quad8 341 / 42 / 30 (1 rank),
     // 57 / 49 with 2 ranks; quad4 129 / 18 / 13, 31 / 27 with 2 ranks.
     solver.set_near_null_space(dim, false, coords);
-    if (!m.spec.initial_stress.empty())
-      solid.set_initial_stress(initial_stress_function(m));
+    if (!m.spec.initial_stress.empty()) solid.set_initial_stress(initial_stress_function(m));
     F_prev.set_zero();
+    if (has_contact) choose_augmentation();
+  }
+
+  // ρ per pair from the bulk stiffness diagonal (one bulk assembly, before any constraint).
+  void choose_augmentation() {
+    K->set_zero();
+    R.set_zero();
+    solid.assemble(u, Constraints{}, K.get(), R);
+    K->finish_assembly();
+    R.finish_assembly();
+    const std::vector<double> diagonal = K->diagonal().gather_all();
+    for (const auto& ia : interfaces) ia->set_augmentation(model.contact_solver, diagonal);
   }
 
   std::vector<Index> set_nodes(const std::string& name) const {
@@ -116,97 +140,211 @@ struct StaticAnalysis::Impl {
     F.finish_assembly();
   }
 
+  struct IncrementLog {
+    int iterations = 0, linear_iterations = 0, uzawa_updates = 0;
+    std::vector<double> history; ///< relative force residual per iteration
+    double contact = 0;          ///< last relative multiplier change
+    std::string failure;
+  };
+
+  bool solve_increment(double lambda, double dtau, IncrementLog& log);
+  double residual_norm(const std::vector<double>& trial, double dtau,
+                       const Constraints& constraints);
   RunSummary run(const std::function<void(const StepReport&)>& on_step);
 };
 
+// ‖R‖ at a trial displacement for the current multipliers (line search merit). Uses R as
+// scratch; no matrix.
+double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, double dtau,
+                                           const Constraints& constraints) {
+  R.set_zero();
+  solid.assemble(trial, constraints, nullptr, R);
+  for (const auto& ia : interfaces) {
+    ia->evaluate(trial, dtau);
+    ia->add_to_system(constraints, nullptr, R);
+  }
+  R.finish_assembly();
+  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
+  double* r = R.owned_values();
+  const double* f = F_step.owned_values();
+  for (Index i = 0; i < n_owned; ++i)
+    if (!constraints.is_constrained(first + i)) r[i] += f[i];
+  return R.norm2();
+}
+
+// Newton (and, for bipotential_uzawa, Uzawa) iterations of one increment ending at stage
+// load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
+bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log) {
+  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
+  const contact::ContactSolverOptions& copt = model.contact_solver;
+  const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
+  const double tolerance = has_contact ? copt.tolerance : options.residual_tolerance;
+  F_step.copy(F_prev);
+  F_step.scale(1.0 - lambda);
+  F_step.axpy(lambda, F_cur);
+  for (const auto& ia : interfaces) ia->begin_increment();
+
+  Constraints constraints;
+  double reference = 0.0, baseline = -1.0;
+  bool first_pass = true;
+  int inner = 0;
+  for (;; ++log.iterations, ++inner) {
+    constraints.clear();
+    for (const auto& [d, v] : target)
+      constraints.set(d, first_pass ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
+    auto t0 = std::chrono::steady_clock::now();
+    bool tangent_changed = false;
+    for (const auto& ia : interfaces) {
+      ia->evaluate(u, dtau);
+      tangent_changed = tangent_changed || ia->tangent_changed();
+    }
+    // Prescribed increments are eliminated with the matrix's own diagonal: rebuild then.
+    const bool need_matrix = !matrix_ready || !linear || tangent_changed ||
+                             (has_contact && first_pass && !target.empty());
+    R.set_zero();
+    if (need_matrix) K->set_zero();
+    solid.assemble(u, constraints, need_matrix ? K.get() : nullptr, R);
+    for (const auto& ia : interfaces)
+      ia->add_to_system(constraints, need_matrix ? K.get() : nullptr, R);
+    R.finish_assembly();
+    if (need_matrix) K->finish_assembly();
+    double* r = R.owned_values();
+    const double* f = F_step.owned_values();
+    for (Index i = 0; i < n_owned; ++i)
+      if (!constraints.is_constrained(first + i)) r[i] += f[i];
+    const double norm = R.norm2();
+    double change = 0, force_scale = 0;
+    for (const auto& ia : interfaces) {
+      change = std::max(change, ia->multiplier_change());
+      force_scale = std::max(force_scale, ia->force_scale());
+    }
+    summary.assembly_seconds += seconds_since(t0);
+    if (log.iterations == 0) {
+      reference = std::max({norm, F_step.norm2(), force_scale});
+      if (reference == 0.0 && change == 0.0) return true; // nothing acts on the body
+    }
+    reference = std::max(reference, force_scale);
+    log.history.push_back(norm / reference);
+    log.contact = change / reference;
+    const bool force_ok = !first_pass && norm <= tolerance * reference;
+    const bool contact_ok = change <= tolerance * reference;
+    if (force_ok && contact_ok) return true;
+    if (baseline < 0) baseline = norm;
+    // When to move the multipliers (the corrector r̂ ← Proj(τ)): bipotential_uzawa once
+    // equilibrium holds for the current ones; semismooth_newton as soon as the residual of
+    // the current inner problem has dropped tenfold (inexact augmented Lagrangian), so
+    // equilibrium and the contact law converge together.
+    const bool inner_done =
+        force_ok || (!copt.uzawa() && !first_pass && norm <= 0.1 * baseline);
+    if (has_contact && inner_done && !contact_ok) {
+      if (log.uzawa_updates >= copt.max_outer_iterations) {
+        log.failure = "the Uzawa multipliers did not settle in " +
+                      std::to_string(log.uzawa_updates) + " updates";
+        return false;
+      }
+      for (const auto& ia : interfaces) ia->update_multipliers();
+      ++log.uzawa_updates;
+      inner = -1;
+      baseline = -1; // the next residual, for the new multipliers, is the new baseline
+      continue;
+    }
+    if (inner >= max_iterations) {
+      log.failure = "no convergence in " + std::to_string(inner) + " iterations";
+      return false;
+    }
+    if (!std::isfinite(norm)) {
+      log.failure = "the residual is not finite";
+      return false;
+    }
+    if (need_matrix) {
+      t0 = std::chrono::steady_clock::now();
+      solver.setup(*K);
+      summary.setup_seconds += seconds_since(t0);
+      matrix_ready = true;
+      for (const auto& ia : interfaces) ia->mark_tangent_assembled();
+      ++summary.matrix_setups;
+    }
+    du.set_zero();
+    t0 = std::chrono::steady_clock::now();
+    LinearSolveStats stats;
+    try {
+      stats = solver.solve(R, du);
+    } catch (const SolverError& e) {
+      log.failure = e.what();
+      return false;
+    }
+    summary.solve_seconds += seconds_since(t0);
+    log.linear_iterations += stats.iterations;
+    summary.linear_iterations += stats.iterations;
+    ++summary.linear_solves;
+    const std::vector<double> du_all = du.gather_all();
+    double step = 1.0;
+    if (has_contact && copt.line_search && !first_pass) {
+      // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs
+      // between stick and slip (or open and closed) back and forth; damping breaks the cycle.
+      t0 = std::chrono::steady_clock::now();
+      const Constraints fixed; // prescribed increments were applied on the first pass
+      std::vector<double> trial(u.size());
+      double best = norm, best_step = 1.0;
+      for (int k = 0; k < 8; ++k, step *= 0.5) {
+        for (std::size_t i = 0; i < u.size(); ++i) trial[i] = u[i] + step * du_all[i];
+        const double merit = residual_norm(trial, dtau, fixed);
+        if (merit < (1.0 - 1e-4 * step) * norm) break;
+        if (merit < best) best = merit, best_step = step;
+        if (k == 7) step = best < norm ? best_step : 1.0;
+      }
+      summary.assembly_seconds += seconds_since(t0);
+    }
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] += step * du_all[i];
+    first_pass = false;
+  }
+}
+
 RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)>& on_step) {
   const auto run_start = std::chrono::steady_clock::now();
-  RunSummary summary;
+  summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
+  const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = 0.0;
-  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
+  std::vector<double> last_resultant(interfaces.size(), 0.0);
 
   for (std::size_t s = 0; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
-    std::map<Index, double> target;
+    target.clear();
     for (const auto& bc : stage.boundary_conditions)
       for (Index node : set_nodes(bc.set)) target[dofs.dof(node, bc.component)] = bc.value;
-    std::map<Index, double> start;
+    start.clear();
     for (const auto& [d, v] : target) start[d] = u[d];
     assemble_loads(stage, F_cur);
-    bool matrix_ready = false; // the constrained set changed: the tangent must be rebuilt
+    matrix_ready = false; // the constrained set may have changed
 
-    for (int k = 1; k <= stage.increments; ++k) {
+    const double planned = 1.0 / stage.increments;
+    double done = 0.0;
+    int level = 0, step = 0;
+    while (done < 1.0 - 1e-12) {
       const auto step_start = std::chrono::steady_clock::now();
-      const double lambda = static_cast<double>(k) / stage.increments;
-      // F(λ) = F_prev + λ (F_cur − F_prev), owned entries only.
-      F_step.copy(F_prev);
-      F_step.scale(1.0 - lambda);
-      F_step.axpy(lambda, F_cur);
-
-      Constraints constraints;
-      double reference = 0.0, norm = 0.0;
-      std::vector<double> history;
-      int it = 0, linear_iterations = 0;
-      bool converged = false;
-      for (;; ++it) {
-        constraints.clear();
-        for (const auto& [d, v] : target)
-          constraints.set(d, it == 0 ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
-        const bool need_matrix = !(linear && matrix_ready);
-        auto t0 = std::chrono::steady_clock::now();
-        R.set_zero();
-        if (need_matrix) K->set_zero();
-        solid.assemble(u, constraints, need_matrix ? K.get() : nullptr, R);
-        R.finish_assembly();
-        if (need_matrix) K->finish_assembly();
-        double* r = R.owned_values();
-        const double* f = F_step.owned_values();
-        for (Index i = 0; i < n_owned; ++i)
-          if (!constraints.is_constrained(first + i)) r[i] += f[i];
-        norm = R.norm2();
-        summary.assembly_seconds += seconds_since(t0);
-        if (it == 0) {
-          reference = std::max(norm, F_step.norm2());
-          if (reference == 0.0) {
-            converged = true;
-            break;
-          }
+      const double size = planned / std::pow(2.0, level);
+      const double lambda = std::min(1.0, done + size);
+      const std::vector<double> u_begin = u;
+      IncrementLog log;
+      if (!solve_increment(lambda, (lambda - done) * stage.duration, log)) {
+        u = u_begin;
+        matrix_ready = false;
+        if (level < max_cutbacks) {
+          ++level;
+          continue;
         }
-        history.push_back(norm / reference);
-        if (it > 0 && norm <= options.residual_tolerance * reference) {
-          converged = true;
-          break;
-        }
-        if (it >= options.max_iterations) break;
-        if (need_matrix) {
-          t0 = std::chrono::steady_clock::now();
-          solver.setup(*K);
-          summary.setup_seconds += seconds_since(t0);
-          matrix_ready = true;
-          ++summary.matrix_setups;
-        }
-        du.set_zero();
-        t0 = std::chrono::steady_clock::now();
-        const LinearSolveStats stats = solver.solve(R, du);
-        summary.solve_seconds += seconds_since(t0);
-        linear_iterations += stats.iterations;
-        summary.linear_iterations += stats.iterations;
-        ++summary.linear_solves;
-        const std::vector<double> du_all = du.gather_all();
-        for (std::size_t i = 0; i < u.size(); ++i) u[i] += du_all[i];
-      }
-      if (!converged) {
         std::ostringstream msg;
-        msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << k << "/"
-            << stage.increments << ": Newton did not converge in " << it
-            << " iterations; relative residual history:";
-        for (double h : history) msg << " " << h;
-        msg << " (tolerance " << options.residual_tolerance << ")";
+        msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
+            << stage.increments << " (load factor " << done << " -> " << lambda << " after "
+            << level << " cut-backs): " << log.failure << "; relative residual history:";
+        for (double h : log.history) msg << " " << h;
+        msg << "; multiplier change " << log.contact
+            << ". Converged increments are in the output directory.";
         throw SolverError(msg.str());
       }
       solid.commit();
-      // Reactions: f_int − f_ext on every DOF (nonzero only where supports act).
+      for (const auto& ia : interfaces) ia->commit();
       auto t0 = std::chrono::steady_clock::now();
       reaction.set_zero();
       solid.internal_force(u, reaction);
@@ -218,29 +356,46 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       StepReport rep;
       rep.stage = stage.name;
       rep.stage_index = static_cast<int>(s);
-      rep.step = k;
+      rep.step = ++step;
       rep.steps = stage.increments;
       rep.global_step = ++summary.steps;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
-      rep.iterations = it;
-      rep.linear_iterations = linear_iterations;
-      rep.residual = history.empty() ? 0.0 : history.back();
+      rep.iterations = log.iterations;
+      rep.linear_iterations = log.linear_iterations;
+      rep.uzawa_updates = log.uzawa_updates;
+      rep.residual = log.history.empty() ? 0.0 : log.history.back();
+      rep.cutbacks = level;
+      rep.unstable = level > 0;
+      for (std::size_t k = 0; k < interfaces.size(); ++k) {
+        const auto f = interfaces[k]->resultant();
+        const double magnitude = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        if (magnitude < 0.8 * last_resultant[k]) rep.unstable = true; // snap-back
+        last_resultant[k] = magnitude;
+      }
       rep.seconds = seconds_since(step_start);
       t0 = std::chrono::steady_clock::now();
       if (writer) writer->write_step(rep, *this_analysis);
       summary.output_seconds += seconds_since(t0);
       if (on_step) on_step(rep);
+      done = lambda;
+      if (level > 0) --level; // grow back towards the planned increment
     }
     F_prev.copy(F_cur);
     time += stage.duration;
     if (stage.reset_displacements) {
       solid.absorb_stress_into_initial(u);
+      for (const auto& ia : interfaces) ia->absorb_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
   }
   summary.seconds = seconds_since(run_start);
   return summary;
+}
+
+const std::vector<std::unique_ptr<contact::InterfaceAssembler>>&
+StaticAnalysis::interfaces() const {
+  return impl_->interfaces;
 }
 
 StaticAnalysis::StaticAnalysis(const Model& model, AnalysisOptions options, ResultWriter* writer)

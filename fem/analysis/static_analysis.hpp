@@ -1,9 +1,13 @@
 #pragma once
 /// Quasi-static analysis in load stages: each stage ramps its boundary conditions and loads
 /// linearly from their state at the end of the previous stage over its increments, and each
-/// increment is solved by Newton's method on R(u) = f_ext − f_int(u) = 0.
+/// increment is solved by Newton's method on R(u) = f_ext − f_int(u) + f_interfaces(u) = 0,
+/// with the interface multipliers updated as the contact solver says (see
+/// contact/solver/contact_solver_options.hpp). An increment that does not converge is
+/// halved (up to the contact solver's max_cutbacks) before the run stops.
 
 #include "fem/analysis/model.hpp"
+#include "contact/solver/interface_assembler.hpp"
 #include "fem/assembly/dof_map.hpp"
 
 #include <functional>
@@ -33,6 +37,9 @@ struct StepReport {
   int linear_iterations = 0;
   double residual = 0;   ///< final relative residual
   double seconds = 0;    ///< wall time of the increment
+  int cutbacks = 0;      ///< halvings needed before this increment converged
+  int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)
+  bool unstable = false; ///< cut back, or an interface force dropped by over 20% (snap-back)
 };
 
 struct RunSummary {
@@ -64,6 +71,8 @@ public:
   /// Reaction force (f_int − f_ext) summed over the nodes of a node or facet set, one value
   /// per spatial component, at the last converged increment.
   std::vector<double> reaction(const std::string& set) const;
+  /// Interface states of the last converged increment (one assembler per interface).
+  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces() const;
   /// Committed cell averages of strain and stress for the cells this rank owns.
   void cell_results(std::vector<Index>& cells, std::vector<double>& strain,
                     std::vector<double>& stress) const;

@@ -1,0 +1,198 @@
+#include "contact/solver/interface_assembler.hpp"
+
+#include "fem/core/error.hpp"
+#include "fem/linalg/distributed_vector.hpp"
+#include "fem/linalg/dof_distribution.hpp"
+#include "fem/linalg/sparse_matrix.hpp"
+#include "fem/linalg/sparsity_pattern.hpp"
+
+#include <cmath>
+
+namespace bipot::contact {
+
+namespace {
+// Local frame as a dim × dim matrix with columns [n, t1 (, t2)].
+Eigen::Matrix3d frame(const InterfacePair& p, int dim) {
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    Q(i, 0) = p.normal[i];
+    Q(i, 1) = p.tangent1[i];
+    Q(i, 2) = p.tangent2[i];
+  }
+  if (dim == 2) Q.col(2).setZero();
+  return Q;
+}
+} // namespace
+
+InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLaw& law,
+                                       const DofMap& dofs, const DofDistribution& dist)
+    : iface_(iface), law_(law), dofs_(dofs), dim_(dofs.dofs_per_node()) {
+  const std::size_t n = iface_.pairs.size();
+  owned_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    owned_[i] = dist.owner_of_node(iface_.pairs[i].node_a) == dist.rank();
+  rho_.assign(n, 1.0);
+  committed_.assign(n, law_.is_tied() ? InterfaceState{} : initial_state(law_, dim_));
+  for (auto& s : committed_)
+    if (s.jump.size() == 0) s.jump = s.r = LocalVector::Zero(dim_);
+  multiplier_.assign(n, LocalVector::Zero(dim_));
+  results_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    results_[i].beta = committed_[i].beta;
+    results_[i].jump = results_[i].r = results_[i].traction = LocalVector::Zero(dim_);
+  }
+  tangent_.assign(n, LocalMatrix::Zero(dim_, dim_));
+  offset_.assign(n, LocalVector::Zero(dim_));
+  assembled_tangent_ = tangent_;
+}
+
+void InterfaceAssembler::add_to_pattern(SparsityPattern& pattern) const {
+  if (tied()) return;
+  std::vector<Index> block;
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
+    if (!owned_[i]) continue;
+    const Index nodes[2] = {iface_.pairs[i].node_a, iface_.pairs[i].node_b};
+    dofs_.node_dofs(nodes, 2, block);
+    pattern.add_cell(block);
+  }
+}
+
+void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
+                                          const std::vector<double>& diagonal_all) {
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
+    const InterfacePair& p = iface_.pairs[i];
+    if (options.augmentation > 0) {
+      rho_[i] = options.augmentation;
+      continue;
+    }
+    double rho = law_.stiffness_scale();
+    if (!(rho > 0)) {
+      // 1/W_ii with W_ii ≈ 1/k_a + 1/k_b: the local flexibility of the two bodies at the pair,
+      // per unit area (k from the bulk diagonal, smallest over the components).
+      double ka = INFINITY, kb = INFINITY;
+      for (int c = 0; c < dim_; ++c) {
+        ka = std::min(ka, diagonal_all[dofs_.dof(p.node_a, c)]);
+        kb = std::min(kb, diagonal_all[dofs_.dof(p.node_b, c)]);
+      }
+      const double k = (ka > 0 && kb > 0) ? 1.0 / (1.0 / ka + 1.0 / kb) : std::max(ka, kb);
+      rho = p.weight > 0 ? k / p.weight : k;
+    }
+    rho_[i] = options.augmentation_factor * rho;
+  }
+}
+
+void InterfaceAssembler::begin_increment() {
+  for (std::size_t i = 0; i < multiplier_.size(); ++i) multiplier_[i] = committed_[i].r;
+}
+
+void InterfaceAssembler::absorb_displacements() {
+  for (std::size_t i = 0; i < offset_.size(); ++i) {
+    offset_[i] = committed_[i].jump;
+    offset_[i](0) -= iface_.initial_gap;
+  }
+}
+
+LocalVector InterfaceAssembler::local_jump(std::size_t i, const std::vector<double>& u) const {
+  const InterfacePair& p = iface_.pairs[i];
+  Eigen::Vector3d g = Eigen::Vector3d::Zero();
+  for (int c = 0; c < dim_; ++c) g(c) = u[dofs_.dof(p.node_b, c)] - u[dofs_.dof(p.node_a, c)];
+  const Eigen::Vector3d local = frame(p, dim_).transpose() * g;
+  LocalVector out = local.head(dim_) + offset_[i];
+  out(0) += iface_.initial_gap;
+  return out;
+}
+
+void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
+  multiplier_change_ = 0;
+  tangent_changed_ = false;
+  if (tied()) return;
+  InterfaceResponseDerivatives d;
+  force_.resize(iface_.pairs.size());
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
+    const InterfacePair& p = iface_.pairs[i];
+    const LocalVector jump = local_jump(i, u);
+    const InterfaceResponse resp =
+        contact::evaluate(law_, committed_[i], jump, multiplier_[i], dtau, rho_[i], &d);
+    PairResult& res = results_[i];
+    res.beta = resp.beta;
+    res.jump = jump;
+    res.r = resp.r;
+    res.traction = resp.traction;
+    res.status = resp.status;
+    multiplier_change_ =
+        std::max(multiplier_change_, p.weight * (resp.r - multiplier_[i]).norm());
+    tangent_[i] = d.dt_djump;
+    if (!(tangent_[i] == assembled_tangent_[i])) tangent_changed_ = true;
+    Eigen::Vector3d t = Eigen::Vector3d::Zero();
+    t.head(dim_) = resp.traction;
+    force_[i] = p.weight * (frame(p, dim_) * t);
+  }
+}
+
+void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMatrix* K,
+                                       DistributedVector& R) const {
+  if (tied()) return;
+  const int n = 2 * dim_;
+  std::vector<Index> block;
+  std::vector<double> Kl(static_cast<std::size_t>(n) * n), Rl(n);
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
+    if (!owned_[i]) continue;
+    const InterfacePair& p = iface_.pairs[i];
+    const Eigen::MatrixXd Q = frame(p, dim_).topLeftCorner(dim_, dim_);
+    // K = −∂R/∂u; R_b = +A Q t(ĝ), ĝ = Qᵀ(u_b − u_a): ∂R_b/∂u_b = A Q (∂t/∂ĝ) Qᵀ.
+    const Eigen::MatrixXd Kt = -p.weight * (Q * Eigen::MatrixXd(tangent_[i]) * Q.transpose());
+    for (int r = 0; r < dim_; ++r) {
+      Rl[r] = -force_[i](r);       // node a receives −A Q t
+      Rl[dim_ + r] = force_[i](r); // node b receives +A Q t
+      for (int c = 0; c < dim_; ++c) {
+        Kl[r * n + c] = Kt(r, c);
+        Kl[r * n + dim_ + c] = -Kt(r, c);
+        Kl[(dim_ + r) * n + c] = -Kt(r, c);
+        Kl[(dim_ + r) * n + dim_ + c] = Kt(r, c);
+      }
+    }
+    const Index nodes[2] = {p.node_a, p.node_b};
+    dofs_.node_dofs(nodes, 2, block);
+    if (K) {
+      constraints.condense(block.data(), n, Kl.data(), Rl.data());
+      K->add_dense(block.data(), n, Kl.data());
+    } else {
+      constraints.condense(block.data(), n, Rl.data());
+    }
+    R.add(block.data(), n, Rl.data());
+  }
+}
+
+void InterfaceAssembler::update_multipliers() {
+  for (std::size_t i = 0; i < multiplier_.size(); ++i) multiplier_[i] = results_[i].r;
+}
+
+void InterfaceAssembler::mark_tangent_assembled() {
+  assembled_tangent_ = tangent_;
+  tangent_changed_ = false;
+}
+
+void InterfaceAssembler::commit() {
+  for (std::size_t i = 0; i < committed_.size(); ++i) {
+    committed_[i].beta = results_[i].beta;
+    committed_[i].jump = results_[i].jump;
+    committed_[i].r = results_[i].r;
+    multiplier_[i] = results_[i].r;
+  }
+}
+
+std::array<double, 3> InterfaceAssembler::resultant() const {
+  std::array<double, 3> sum = {0, 0, 0};
+  for (const auto& f : force_)
+    for (int c = 0; c < 3; ++c) sum[c] += f(c);
+  return sum;
+}
+
+double InterfaceAssembler::force_scale() const {
+  double s = 0;
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i)
+    s = std::max(s, iface_.pairs[i].weight * results_[i].traction.norm());
+  return s;
+}
+
+} // namespace bipot::contact

@@ -1,0 +1,106 @@
+#pragma once
+/// Node-to-node interface forces and tangents for one interface (formulation.md §1–5).
+///
+/// For pair i with weight A_i and local frame Q_i = [n, t1 (, t2)] (columns), the local jump
+/// is ĝ = Q_iᵀ (u_b − u_a) + g0 n; the law's point-wise map gives the traction t (local) that
+/// body 1 (node a) exerts on body 2 (node b): nodal force A_i Q_i t on b and −A_i Q_i t on a.
+/// The tangent uses ∂t/∂ĝ at fixed multiplier r̂ (the projection's generalized Jacobian and
+/// the implicit β update). Every rank evaluates every pair (interfaces are small next to the
+/// bulk) so all ranks hold the whole interface state; each rank assembles the pairs whose
+/// node a it owns.
+
+#include "contact/interface/interface_mesh.hpp"
+#include "contact/laws/interface_law.hpp"
+#include "contact/solver/contact_solver_options.hpp"
+#include "fem/assembly/constraints.hpp"
+#include "fem/assembly/dof_map.hpp"
+
+#include <vector>
+
+namespace bipot {
+class SparseMatrix;
+class SparsityPattern;
+class DistributedVector;
+class DofDistribution;
+} // namespace bipot
+
+namespace bipot::contact {
+
+/// What a pair looks like after an evaluation (output, tests).
+struct PairResult {
+  double beta = 0;
+  LocalVector jump;     ///< [g_n, g_t...] (m)
+  LocalVector r;        ///< irreversible part [p, r_t...] (kPa)
+  LocalVector traction; ///< total t (kPa)
+  ContactStatus status = ContactStatus::Open;
+};
+
+class InterfaceAssembler {
+public:
+  /// `law` is not owned. Pairs with node_a == node_b (perfect bonding) are not assembled.
+  InterfaceAssembler(const Interface& iface, const InterfaceLaw& law, const DofMap& dofs,
+                     const DofDistribution& dist);
+
+  const Interface& interface() const { return iface_; }
+  const InterfaceLaw& law() const { return law_; }
+  bool tied() const { return law_.is_tied(); }
+  std::size_t num_pairs() const { return iface_.pairs.size(); }
+
+  /// Adds the [a, b] DOF block of every owned pair.
+  void add_to_pattern(SparsityPattern& pattern) const;
+  /// Chooses ρ per pair: the option's value if given, else factor × (the law's stiffness
+  /// scale, or 1/(A_i W_ii) from the bulk diagonal `diagonal_all` of all DOFs).
+  void set_augmentation(const ContactSolverOptions& options,
+                        const std::vector<double>& diagonal_all);
+
+  /// Starts an increment: multipliers r̂ from the committed state.
+  void begin_increment();
+  /// Evaluates every pair at `u` (all DOFs) with the current multipliers r̂: β, traction,
+  /// Proj(τ), status, tangent. Pseudo-time step `dtau` (s).
+  void evaluate(const std::vector<double>& u, double dtau);
+  /// Adds the owned pairs' condensed contributions of the last evaluation to R (and K if
+  /// not null).
+  void add_to_system(const Constraints& constraints, SparseMatrix* K, DistributedVector& R) const;
+  /// max_i A_i ‖Proj(τ_i) − r̂_i‖ of the last evaluation (kN): how far the multipliers are
+  /// from the bipotential fixed point.
+  double multiplier_change() const { return multiplier_change_; }
+  /// r̂ ← Proj(τ) of the last evaluation (the Uzawa corrector).
+  void update_multipliers();
+  /// True when the interface tangent of the last evaluation differs from the one last put
+  /// into a matrix (then the matrix must be rebuilt).
+  bool tangent_changed() const { return tangent_changed_; }
+  /// Records the current tangent as the one in the matrix.
+  void mark_tangent_assembled();
+  /// Accepts the last evaluation as the converged state of the increment.
+  void commit();
+  /// Displacement reset keeping forces (geostatic stage): the current jumps become an
+  /// offset, so that after the caller zeroes u the interface sees the same jumps.
+  void absorb_displacements();
+
+  /// Last evaluation of every pair.
+  const std::vector<PairResult>& results() const { return results_; }
+  /// Resultant force body 1 exerts on body 2 (kN, global components), last evaluation.
+  std::array<double, 3> resultant() const;
+  /// Largest A_i ‖t_i‖ (kN): a force scale for convergence checks.
+  double force_scale() const;
+
+private:
+  LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
+
+  const Interface& iface_;
+  const InterfaceLaw& law_;
+  const DofMap& dofs_;
+  int dim_;
+  std::vector<bool> owned_;
+  std::vector<double> rho_;
+  std::vector<InterfaceState> committed_;
+  std::vector<LocalVector> multiplier_;
+  std::vector<PairResult> results_;
+  std::vector<LocalMatrix> tangent_, assembled_tangent_;
+  std::vector<Eigen::Vector3d> force_; ///< A_i Q_i t_i, global components (padded to 3)
+  std::vector<LocalVector> offset_;    ///< jump kept through displacement resets
+  double multiplier_change_ = 0;
+  bool tangent_changed_ = true;
+};
+
+} // namespace bipot::contact

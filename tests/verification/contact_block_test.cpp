@@ -1,0 +1,156 @@
+// An elastic block on an elastic foundation, plane strain: pressed down, sheared until it
+// slides, then lifted. Node-to-node interface between the two regions.
+// - gross sliding: the tangential interface force equals mu times the normal one;
+// - before sliding the interface sticks and carries less than mu N;
+// - lifted, the interface is open and carries nothing;
+// - both contact solvers reach the same solution; RCCM with beta0 = 0 is Coulomb-Signorini;
+// - perfect bonding equals the same mesh without any interface.
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/input/problem_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bipot {
+namespace {
+
+std::string block_input(const std::string& interface, const std::string& solver,
+                        const std::string& stages) {
+  return "kinematics: plane_strain\n"
+         "mesh:\n  blocks:\n    cell: quad4\n"
+         "    x: {breaks: [0, 1.0], cells: [4]}\n"
+         "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
+         "    regions: [base, block]\n"
+         "materials:\n"
+         "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
+         "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+         "linear_solver: {method: direct}\n" +
+         interface + solver + "stages:\n" + stages;
+}
+
+const std::string press_shear_lift =
+    "  - name: press\n    increments: 2\n    boundary_conditions:\n"
+    "      - {set: bottom, component: x, value: 0}\n"
+    "      - {set: bottom, component: y, value: 0}\n"
+    "      - {set: top, component: x, value: 0}\n"
+    "      - {set: top, component: y, value: -1.0e-3}\n"
+    "  - name: shear\n    increments: 4\n    boundary_conditions:\n"
+    "      - {set: bottom, component: x, value: 0}\n"
+    "      - {set: bottom, component: y, value: 0}\n"
+    "      - {set: top, component: x, value: 4.0e-3}\n"
+    "      - {set: top, component: y, value: -1.0e-3}\n"
+    "  - name: lift\n    increments: 2\n    boundary_conditions:\n"
+    "      - {set: bottom, component: x, value: 0}\n"
+    "      - {set: bottom, component: y, value: 0}\n"
+    "      - {set: top, component: x, value: 4.0e-3}\n"
+    "      - {set: top, component: y, value: 1.0e-3}\n";
+
+std::string coulomb(double mu) {
+  return "interfaces:\n  - name: joint\n    between: [base, block]\n    law: coulomb_signorini\n"
+         "    parameters: {friction_coefficient: " + std::to_string(mu) + "}\n";
+}
+
+std::string solver(const std::string& type) {
+  return "contact_solver: {type: " + type + ", tolerance: 1.0e-11}\n";
+}
+
+struct StageForces {
+  std::vector<std::array<double, 3>> resultant; ///< interface force after each increment
+  std::vector<int> sticking;                    ///< pairs in stick after each increment
+  std::vector<double> u;                        ///< final displacement
+};
+
+StageForces run(const std::string& text) {
+  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  StaticAnalysis analysis(model);
+  StageForces out;
+  analysis.run([&](const StepReport&) {
+    if (analysis.interfaces().empty()) return;
+    const auto& ia = *analysis.interfaces()[0];
+    out.resultant.push_back(ia.resultant());
+    int stick = 0;
+    for (const auto& r : ia.results()) stick += r.status == contact::ContactStatus::Stick;
+    out.sticking.push_back(stick);
+  });
+  out.u = analysis.displacement();
+  return out;
+}
+
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double d = 0, n = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    d += (a[i] - b[i]) * (a[i] - b[i]);
+    n += b[i] * b[i];
+  }
+  return std::sqrt(d / n);
+}
+
+TEST(ContactBlock, SlidesAtMuTimesNormalForceAndOpensWhenLifted) {
+  const double mu = 0.3;
+  const auto res = run(block_input(coulomb(mu), solver("semismooth_newton"), press_shear_lift));
+  ASSERT_EQ(res.resultant.size(), 8u);
+  // Pressed: compression across the joint (force on the block points up), no shear.
+  EXPECT_GT(res.resultant[1][1], 0.0);
+  // Last shear increment: 4 mm of shear over 1 mm of compression makes the block slide.
+  const auto& f = res.resultant[5];
+  EXPECT_NEAR(std::abs(f[0]), mu * f[1], 1e-8 * mu * f[1]);
+  EXPECT_EQ(res.sticking[5], 0);
+  // Lifted: the joint is open and carries nothing.
+  EXPECT_EQ(res.resultant[7][0], 0.0);
+  EXPECT_EQ(res.resultant[7][1], 0.0);
+}
+
+TEST(ContactBlock, SticksBeforeSliding) {
+  const double mu = 0.3;
+  const std::string small_shear =
+      "  - name: press\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: top, component: x, value: 0}\n"
+      "      - {set: top, component: y, value: -1.0e-3}\n"
+      "  - name: nudge\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: top, component: x, value: 1.0e-5}\n"
+      "      - {set: top, component: y, value: -1.0e-3}\n";
+  const auto res = run(block_input(coulomb(mu), solver("semismooth_newton"), small_shear));
+  const auto& f = res.resultant.back();
+  EXPECT_GT(std::abs(f[0]), 0.0);
+  EXPECT_LT(std::abs(f[0]), 0.5 * mu * f[1]);
+}
+
+TEST(ContactBlock, UzawaAndNewtonAgree) {
+  const auto newton = run(block_input(coulomb(0.3), solver("semismooth_newton"), press_shear_lift));
+  const auto uzawa = run(block_input(coulomb(0.3), solver("bipotential_uzawa"), press_shear_lift));
+  EXPECT_LT(relative_difference(uzawa.u, newton.u), 1e-8);
+}
+
+TEST(ContactBlock, RccmWithoutAdhesionIsCoulombSignorini) {
+  const std::string rccm =
+      "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
+      "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
+      "decohesion_energy: 0.01, friction_coefficient: 0.3, initial_adhesion: 0.0}\n";
+  const auto a = run(block_input(rccm, solver("semismooth_newton"), press_shear_lift));
+  const auto b = run(block_input(coulomb(0.3), solver("semismooth_newton"), press_shear_lift));
+  EXPECT_LT(relative_difference(a.u, b.u), 1e-10);
+}
+
+TEST(ContactBlock, PerfectBondingEqualsNoInterface) {
+  const std::string bonded =
+      "interfaces:\n  - name: joint\n    between: [base, block]\n    law: perfect_bonding\n";
+  const std::string press =
+      "  - name: press\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: top, component: x, value: 2.0e-3}\n"
+      "      - {set: top, component: y, value: 1.0e-3}\n";
+  const auto a = run(block_input(bonded, "", press));
+  const auto b = run(block_input("", "", press));
+  ASSERT_EQ(a.u.size(), b.u.size());
+  EXPECT_LT(relative_difference(a.u, b.u), 1e-10);
+}
+
+} // namespace
+} // namespace bipot
