@@ -30,15 +30,17 @@ VoigtMatrix LinearElastic::elasticity_matrix(int n) const {
   const double G = E / (2 * (1 + nu));
   VoigtMatrix D = VoigtMatrix::Zero(n, n);
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) D(i, j) = lambda;
+    for (int j = 0; j < 3; ++j)
+      D(i, j) = lambda;
     D(i, i) += 2 * G;
   }
-  for (int i = 3; i < n; ++i) D(i, i) = G; // engineering shear strains
+  for (int i = 3; i < n; ++i)
+    D(i, i) = G; // engineering shear strains
   return D;
 }
 
-void LinearElastic::update(const Voigt& strain, const double*, Voigt& stress,
-                           VoigtMatrix& tangent, double*) const {
+void LinearElastic::update(const Voigt& strain, const double*, Voigt& stress, VoigtMatrix& tangent,
+                           double*) const {
   tangent = elasticity_matrix(static_cast<int>(strain.size()));
   stress = tangent * strain;
 }

@@ -18,7 +18,9 @@ namespace bipot::app {
 
 namespace {
 
-bool root() { return mpi_rank() == 0; }
+bool root() {
+  return mpi_rank() == 0;
+}
 
 // Peak resident memory of this process (VmHWM), MB; 0 where /proc is not available.
 double peak_memory_mb() {
@@ -41,7 +43,8 @@ int report(const std::exception& e, int code) {
   if (auto input = dynamic_cast<const InputError*>(&e)) {
     std::cerr << "bipot: invalid input (" << input->problems().size() << " problem"
               << (input->problems().size() == 1 ? "" : "s") << "):\n";
-    for (const auto& p : input->problems()) std::cerr << "  " << p << "\n";
+    for (const auto& p : input->problems())
+      std::cerr << "  " << p << "\n";
   } else {
     std::cerr << "bipot: " << e.what() << "\n";
   }
@@ -98,8 +101,8 @@ int check_command(const std::vector<std::string>& args) {
     const Model model = build_model(read_problem_file(file));
     if (root())
       std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
-                << model.mesh.num_cells() << " cells, " << model.spec.stages.size()
-                << " stage" << (model.spec.stages.size() == 1 ? "" : "s") << ")\n";
+                << model.mesh.num_cells() << " cells, " << model.spec.stages.size() << " stage"
+                << (model.spec.stages.size() == 1 ? "" : "s") << ")\n";
     return 0;
   });
 }
@@ -115,7 +118,8 @@ int run_command(const std::vector<std::string>& args) {
   }
   bool quiet = false;
   for (const auto& a : args)
-    if (a == "--quiet" || a == "-q") quiet = true;
+    if (a == "--quiet" || a == "-q")
+      quiet = true;
     else if (!a.empty() && a[0] == '-') {
       if (root()) std::cerr << "bipot run: unknown option '" << a << "'\n";
       return 1;
@@ -128,8 +132,8 @@ int run_command(const std::vector<std::string>& args) {
     StaticAnalysis analysis(model, {}, &writer);
     if (root() && !quiet)
       std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "
-                << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs()
-                << " DOFs on " << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
+                << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs() << " DOFs on "
+                << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
     const RunSummary summary = analysis.run([&](const StepReport& r) {
       if (!root() || quiet) return;
       std::printf("  stage %-12s step %3d/%-3d  t = %-9.4g  newton %2d  linear %4d  "
@@ -147,8 +151,8 @@ int run_command(const std::vector<std::string>& args) {
                   summary.steps, summary.linear_solves, summary.linear_iterations,
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
                   summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
-      std::cout << "bipot: results in " << writer.directory() << " (ParaView: "
-                << writer.pvd_path() << ")\n";
+      std::cout << "bipot: results in " << writer.directory() << " (ParaView: " << writer.pvd_path()
+                << ")\n";
     }
     return 0;
   });
@@ -167,8 +171,10 @@ int describe_command(const std::vector<std::string>& args) {
   std::vector<std::string> names;
   bool markdown = false;
   for (const auto& a : args)
-    if (a == "--markdown") markdown = true;
-    else names.push_back(a);
+    if (a == "--markdown")
+      markdown = true;
+    else
+      names.push_back(a);
   if (names.empty()) {
     std::cout << "materials: " << join_names(mats.names()) << "\n"
               << "solvers: linear_solver\n"
@@ -180,9 +186,12 @@ int describe_command(const std::vector<std::string>& args) {
   auto print = [&](const ParamSchema& s) {
     std::cout << (markdown ? s.markdown_table() : s.describe());
   };
-  if (mats.contains(name)) print(mats.schema(name));
-  else if (name == "linear_solver") print(LinearSolver::schema());
-  else if (name == "input") std::cout << describe_input_format();
+  if (mats.contains(name))
+    print(mats.schema(name));
+  else if (name == "linear_solver")
+    print(LinearSolver::schema());
+  else if (name == "input")
+    std::cout << describe_input_format();
   else {
     std::vector<std::string> all = mats.names();
     all.push_back("linear_solver");

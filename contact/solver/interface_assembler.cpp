@@ -82,7 +82,8 @@ void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
 }
 
 void InterfaceAssembler::begin_increment() {
-  for (std::size_t i = 0; i < multiplier_.size(); ++i) multiplier_[i] = committed_[i].r;
+  for (std::size_t i = 0; i < multiplier_.size(); ++i)
+    multiplier_[i] = committed_[i].r;
 }
 
 void InterfaceAssembler::absorb_displacements() {
@@ -95,7 +96,8 @@ void InterfaceAssembler::absorb_displacements() {
 LocalVector InterfaceAssembler::local_jump(std::size_t i, const std::vector<double>& u) const {
   const InterfacePair& p = iface_.pairs[i];
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
-  for (int c = 0; c < dim_; ++c) g(c) = u[dofs_.dof(p.node_b, c)] - u[dofs_.dof(p.node_a, c)];
+  for (int c = 0; c < dim_; ++c)
+    g(c) = u[dofs_.dof(p.node_b, c)] - u[dofs_.dof(p.node_a, c)];
   const Eigen::Vector3d local = frame(p, dim_).transpose() * g;
   LocalVector out = local.head(dim_) + offset_[i];
   out(0) += iface_.initial_gap;
@@ -119,8 +121,7 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
     res.r = resp.r;
     res.traction = resp.traction;
     res.status = resp.status;
-    multiplier_change_ =
-        std::max(multiplier_change_, p.weight * (resp.r - multiplier_[i]).norm());
+    multiplier_change_ = std::max(multiplier_change_, p.weight * (resp.r - multiplier_[i]).norm());
     tangent_[i] = d.dt_djump;
     if (!(tangent_[i] == assembled_tangent_[i])) tangent_changed_ = true;
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
@@ -164,7 +165,8 @@ void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMat
 }
 
 void InterfaceAssembler::update_multipliers() {
-  for (std::size_t i = 0; i < multiplier_.size(); ++i) multiplier_[i] = results_[i].r;
+  for (std::size_t i = 0; i < multiplier_.size(); ++i)
+    multiplier_[i] = results_[i].r;
 }
 
 void InterfaceAssembler::mark_tangent_assembled() {
@@ -184,7 +186,8 @@ void InterfaceAssembler::commit() {
 std::array<double, 3> InterfaceAssembler::resultant() const {
   std::array<double, 3> sum = {0, 0, 0};
   for (const auto& f : force_)
-    for (int c = 0; c < 3; ++c) sum[c] += f(c);
+    for (int c = 0; c < 3; ++c)
+      sum[c] += f(c);
   return sum;
 }
 

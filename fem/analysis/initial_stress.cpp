@@ -24,14 +24,16 @@ initial_stress_function(const Model& model) {
     if (region < 0 || region >= static_cast<int>(has.size()) || !has[region]) return sigma;
     const InitialStressSpec& s = by_region[region];
     if (s.type == "constant") {
-      for (int i = 0; i < nv; ++i) sigma(i) = s.stress[i];
+      for (int i = 0; i < nv; ++i)
+        sigma(i) = s.stress[i];
       return sigma;
     }
     const int vertical = dim - 1;
     const double depth = std::max(0.0, s.surface - x[vertical]);
     const double sv = -s.unit_weight * depth;
     const double sh = s.lateral_coefficient * sv;
-    for (int i = 0; i < 3; ++i) sigma(i) = (i == vertical) ? sv : sh;
+    for (int i = 0; i < 3; ++i)
+      sigma(i) = (i == vertical) ? sv : sh;
     return sigma;
   };
 }

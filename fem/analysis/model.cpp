@@ -2,12 +2,12 @@
 
 #include "fem/core/error.hpp"
 
-#include <algorithm>
-#include "fem/core/nearest_name.hpp"
 #include "contact/laws/interface_law_registry.hpp"
+#include "fem/core/nearest_name.hpp"
 #include "fem/gmsh/gmsh_reader.hpp"
 #include "fem/mesh/structured_mesh.hpp"
 #include "materials/material_registry.hpp"
+#include <algorithm>
 
 namespace bipot {
 
@@ -22,7 +22,8 @@ CellType parse_cell(const std::string& name) {
 
 std::vector<std::string> keys_of(const std::map<std::string, std::vector<Index>>& m) {
   std::vector<std::string> out;
-  for (const auto& kv : m) out.push_back(kv.first);
+  for (const auto& kv : m)
+    out.push_back(kv.first);
   return out;
 }
 
@@ -61,9 +62,8 @@ void split_interfaces(Model& model) {
   std::size_t it = 0, is = 0;
   for (bool t : is_tied)
     model.interfaces.push_back(std::move(t ? tied_ifaces[it++] : split_ifaces[is++]));
-  model.contact_solver =
-      *contact::contact_solvers().create(model.spec.contact_solver.type,
-                                         model.spec.contact_solver.parameters);
+  model.contact_solver = *contact::contact_solvers().create(model.spec.contact_solver.type,
+                                                            model.spec.contact_solver.parameters);
 }
 
 } // namespace
@@ -88,15 +88,16 @@ Model build_model(const ProblemSpec& spec) {
     model.mesh = build_mesh(spec.mesh, dim);
   } catch (const InputError& e) {
     std::vector<std::string> problems;
-    for (const auto& p : e.problems()) problems.push_back(spec.mesh.where + ": " + p);
+    for (const auto& p : e.problems())
+      problems.push_back(spec.mesh.where + ": " + p);
     throw InputError(problems);
   }
   const Mesh& mesh = model.mesh;
   std::vector<std::string> problems;
   if (mesh.dim != dim)
     problems.push_back(spec.mesh.where + ": the mesh is " + std::to_string(mesh.dim) +
-                       "D but kinematics '" + spec.kinematics + "' needs " +
-                       std::to_string(dim) + "D");
+                       "D but kinematics '" + spec.kinematics + "' needs " + std::to_string(dim) +
+                       "D");
   if (model.kinematics == Kinematics::Axisymmetric) {
     for (Index n = 0; n < mesh.num_nodes(); ++n)
       if (mesh.nodes[n][0] < -1e-12) {
@@ -124,7 +125,8 @@ Model build_model(const ProblemSpec& spec) {
     model.material_of_region[it->second] = model.materials.back().get();
   }
   std::vector<bool> region_used(max_id + 1, false);
-  for (int r : mesh.cell_regions) region_used[r] = true;
+  for (int r : mesh.cell_regions)
+    region_used[r] = true;
   for (const auto& [name, id] : mesh.regions)
     if (region_used[id] && !model.material_of_region[id] &&
         std::none_of(spec.materials.begin(), spec.materials.end(),
@@ -134,7 +136,8 @@ Model build_model(const ProblemSpec& spec) {
 
   // Sets named by stages.
   std::vector<std::string> facet_names;
-  for (const auto& kv : mesh.facet_sets) facet_names.push_back(kv.first);
+  for (const auto& kv : mesh.facet_sets)
+    facet_names.push_back(kv.first);
   const auto node_names = keys_of(mesh.node_sets);
   for (const auto& stage : spec.stages) {
     for (const auto& bc : stage.boundary_conditions)

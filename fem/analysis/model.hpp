@@ -20,7 +20,7 @@ struct Model {
   Mesh mesh;
   std::vector<std::unique_ptr<Material>> materials; ///< owned, one per materials entry
   std::vector<const Material*> material_of_region;  ///< indexed by mesh region id
-  std::vector<contact::Interface> interfaces;        ///< split and paired, in input order
+  std::vector<contact::Interface> interfaces;       ///< split and paired, in input order
   std::vector<std::unique_ptr<contact::InterfaceLaw>> interface_laws; ///< one per interface
   contact::ContactSolverOptions contact_solver;
 };

@@ -23,7 +23,8 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size)
   std::filesystem::create_directories(directory_);
   std::set<std::string> sets;
   for (const auto& stage : model.spec.stages)
-    for (const auto& bc : stage.boundary_conditions) sets.insert(bc.set);
+    for (const auto& bc : stage.boundary_conditions)
+      sets.insert(bc.set);
   reaction_sets_.assign(sets.begin(), sets.end());
   if (model.spec.output.vtk)
     vtk_ = std::make_unique<VtkSeriesWriter>(directory_, "solution", rank, size);
@@ -40,38 +41,47 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size)
       const int region = m.region_id(iface.name);
       for (const auto& f : iface.facets_a) {
         std::vector<Index> ids;
-        for (Index n : f.nodes) ids.push_back(pair_of_node.at(n));
+        for (Index n : f.nodes)
+          ids.push_back(pair_of_node.at(n));
         m.add_cell(f.type, ids, region);
       }
       interface_meshes_.push_back(std::move(m));
-      interface_vtk_.push_back(std::make_unique<VtkSeriesWriter>(
-          directory_, "interface_" + iface.name, 0, 1));
+      interface_vtk_.push_back(
+          std::make_unique<VtkSeriesWriter>(directory_, "interface_" + iface.name, 0, 1));
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
-      for (const auto& c : component_names(model)) cols.push_back("force_" + c);
+      for (const auto& c : component_names(model))
+        cols.push_back("force_" + c);
       interface_csv_.push_back(
           std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
     }
     std::vector<std::string> columns = {"stage", "step", "time", "load_factor"};
     for (const auto& s : reaction_sets_)
-      for (const auto& c : component_names(model)) columns.push_back(s + "_f" + c);
+      for (const auto& c : component_names(model))
+        columns.push_back(s + "_f" + c);
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
   }
 }
 
 ResultWriter::~ResultWriter() = default;
 
-std::string ResultWriter::reactions_path() const { return directory_ + "/reactions.csv"; }
-std::string ResultWriter::pvd_path() const { return directory_ + "/solution.pvd"; }
+std::string ResultWriter::reactions_path() const {
+  return directory_ + "/reactions.csv";
+}
+std::string ResultWriter::pvd_path() const {
+  return directory_ + "/solution.pvd";
+}
 
 void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& analysis) {
   std::vector<double> row = {static_cast<double>(report.stage_index + 1),
                              static_cast<double>(report.step), report.time, report.load_factor};
   for (const auto& s : reaction_sets_)
-    for (double f : analysis.reaction(s)) row.push_back(f);
+    for (double f : analysis.reaction(s))
+      row.push_back(f);
   if (reactions_) reactions_->write_row(row);
   if (rank_ == 0) write_interfaces(report, analysis);
 
-  const bool due = report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
+  const bool due =
+      report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
   std::vector<double> strain, stress;
@@ -90,10 +100,10 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
   for (std::size_t k = 0; k < interface_csv_.size(); ++k) {
     const auto& ia = *analysis.interfaces()[k];
     std::vector<double> row = {static_cast<double>(report.stage_index + 1),
-                               static_cast<double>(report.step), report.time,
-                               report.load_factor};
+                               static_cast<double>(report.step), report.time, report.load_factor};
     const auto f = ia.resultant();
-    for (int c = 0; c < dim; ++c) row.push_back(f[c]);
+    for (int c = 0; c < dim; ++c)
+      row.push_back(f[c]);
     interface_csv_[k]->write_row(row);
 
     const auto& results = ia.results();
@@ -114,7 +124,8 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
       status.values.push_back(static_cast<double>(r.status)); // 0 open, 1 stick, 2 slip
     }
     std::vector<Index> cells(interface_meshes_[k].num_cells());
-    for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c) cells[c] = c;
+    for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c)
+      cells[c] = c;
     interface_vtk_[k]->write_step(report.time, interface_meshes_[k], cells,
                                   {tn, tt, p, gn, gt, beta, status}, {});
   }

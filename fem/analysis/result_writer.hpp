@@ -3,8 +3,8 @@
 /// (displacement, strain, stress, owning rank; the writer adds the region id), a CSV of
 /// reaction forces per supported set, and per interface a VTK series of its line/surface
 /// mesh (tractions, contact pressure, opening, slip, β, status) and a CSV of the resultant
-/// force body 1 exerts on body 2. Files are complete after each step, so an interrupted run keeps every
-/// converged increment readable.
+/// force body 1 exerts on body 2. Files are complete after each step, so an interrupted run keeps
+/// every converged increment readable.
 
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"

@@ -71,7 +71,7 @@ struct StaticAnalysis::Impl {
   std::vector<double> u;
   std::vector<double> reaction_all;
   bool linear;
-  bool matrix_ready = false; ///< K and the solver hold the current tangent
+  bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
 
@@ -83,10 +83,10 @@ struct StaticAnalysis::Impl {
         dofs(m.mesh.num_nodes(), dim), dist(m.mesh.num_nodes(), dim),
         cell_owned(owned_cell_flags(m.mesh, dist)),
         solid(m.mesh, m.kinematics, dofs, m.material_of_region, indices_of(cell_owned)),
-        loads(m.mesh, m.kinematics, dofs, cell_owned), R(dist), du(dist), F_prev(dist),
-        F_cur(dist), F_step(dist), reaction(dist),
-        solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)),
-        u(dofs.num_dofs(), 0.0), linear(all_linear(m)) {
+        loads(m.mesh, m.kinematics, dofs, cell_owned), R(dist), du(dist), F_prev(dist), F_cur(dist),
+        F_step(dist), reaction(dist),
+        solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)), u(dofs.num_dofs(), 0.0),
+        linear(all_linear(m)) {
     for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
       interfaces.push_back(std::make_unique<contact::InterfaceAssembler>(
           m.interfaces[k], *m.interface_laws[k], dofs, dist));
@@ -94,7 +94,8 @@ struct StaticAnalysis::Impl {
     }
     SparsityPattern pattern;
     solid.add_to_pattern(pattern);
-    for (const auto& ia : interfaces) ia->add_to_pattern(pattern);
+    for (const auto& ia : interfaces)
+      ia->add_to_pattern(pattern);
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
@@ -119,7 +120,8 @@ struct StaticAnalysis::Impl {
     K->finish_assembly();
     R.finish_assembly();
     const std::vector<double> diagonal = K->diagonal().gather_all();
-    for (const auto& ia : interfaces) ia->set_augmentation(model.contact_solver, diagonal);
+    for (const auto& ia : interfaces)
+      ia->set_augmentation(model.contact_solver, diagonal);
   }
 
   std::vector<Index> set_nodes(const std::string& name) const {
@@ -132,9 +134,15 @@ struct StaticAnalysis::Impl {
     F.set_zero();
     for (const auto& ld : stage.loads) {
       switch (ld.type) {
-      case LoadSpec::Type::Pressure: loads.add_pressure(ld.set, ld.pressure, F); break;
-      case LoadSpec::Type::Traction: loads.add_traction(ld.set, ld.traction, F); break;
-      case LoadSpec::Type::Gravity: loads.add_gravity(model.material_of_region, F); break;
+      case LoadSpec::Type::Pressure:
+        loads.add_pressure(ld.set, ld.pressure, F);
+        break;
+      case LoadSpec::Type::Traction:
+        loads.add_traction(ld.set, ld.traction, F);
+        break;
+      case LoadSpec::Type::Gravity:
+        loads.add_gravity(model.material_of_region, F);
+        break;
       }
     }
     F.finish_assembly();
@@ -182,7 +190,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);
   F_step.axpy(lambda, F_cur);
-  for (const auto& ia : interfaces) ia->begin_increment();
+  for (const auto& ia : interfaces)
+    ia->begin_increment();
 
   Constraints constraints;
   double reference = 0.0, baseline = -1.0;
@@ -234,15 +243,15 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     // equilibrium holds for the current ones; semismooth_newton as soon as the residual of
     // the current inner problem has dropped tenfold (inexact augmented Lagrangian), so
     // equilibrium and the contact law converge together.
-    const bool inner_done =
-        force_ok || (!copt.uzawa() && !first_pass && norm <= 0.1 * baseline);
+    const bool inner_done = force_ok || (!copt.uzawa() && !first_pass && norm <= 0.1 * baseline);
     if (has_contact && inner_done && !contact_ok) {
       if (log.uzawa_updates >= copt.max_outer_iterations) {
         log.failure = "the Uzawa multipliers did not settle in " +
                       std::to_string(log.uzawa_updates) + " updates";
         return false;
       }
-      for (const auto& ia : interfaces) ia->update_multipliers();
+      for (const auto& ia : interfaces)
+        ia->update_multipliers();
       ++log.uzawa_updates;
       inner = -1;
       baseline = -1; // the next residual, for the new multipliers, is the new baseline
@@ -261,7 +270,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       solver.setup(*K);
       summary.setup_seconds += seconds_since(t0);
       matrix_ready = true;
-      for (const auto& ia : interfaces) ia->mark_tangent_assembled();
+      for (const auto& ia : interfaces)
+        ia->mark_tangent_assembled();
       ++summary.matrix_setups;
     }
     du.set_zero();
@@ -287,7 +297,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       std::vector<double> trial(u.size());
       double best = norm, best_step = 1.0;
       for (int k = 0; k < 8; ++k, step *= 0.5) {
-        for (std::size_t i = 0; i < u.size(); ++i) trial[i] = u[i] + step * du_all[i];
+        for (std::size_t i = 0; i < u.size(); ++i)
+          trial[i] = u[i] + step * du_all[i];
         const double merit = residual_norm(trial, dtau, fixed);
         if (merit < (1.0 - 1e-4 * step) * norm) break;
         if (merit < best) best = merit, best_step = step;
@@ -295,7 +306,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       }
       summary.assembly_seconds += seconds_since(t0);
     }
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] += step * du_all[i];
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] += step * du_all[i];
     first_pass = false;
   }
 }
@@ -312,9 +324,11 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     const StageSpec& stage = model.spec.stages[s];
     target.clear();
     for (const auto& bc : stage.boundary_conditions)
-      for (Index node : set_nodes(bc.set)) target[dofs.dof(node, bc.component)] = bc.value;
+      for (Index node : set_nodes(bc.set))
+        target[dofs.dof(node, bc.component)] = bc.value;
     start.clear();
-    for (const auto& [d, v] : target) start[d] = u[d];
+    for (const auto& [d, v] : target)
+      start[d] = u[d];
     assemble_loads(stage, F_cur);
     matrix_ready = false; // the constrained set may have changed
 
@@ -338,13 +352,15 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
             << stage.increments << " (load factor " << done << " -> " << lambda << " after "
             << level << " cut-backs): " << log.failure << "; relative residual history:";
-        for (double h : log.history) msg << " " << h;
+        for (double h : log.history)
+          msg << " " << h;
         msg << "; multiplier change " << log.contact
             << ". Converged increments are in the output directory.";
         throw SolverError(msg.str());
       }
       solid.commit();
-      for (const auto& ia : interfaces) ia->commit();
+      for (const auto& ia : interfaces)
+        ia->commit();
       auto t0 = std::chrono::steady_clock::now();
       reaction.set_zero();
       solid.internal_force(u, reaction);
@@ -385,7 +401,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     time += stage.duration;
     if (stage.reset_displacements) {
       solid.absorb_stress_into_initial(u);
-      for (const auto& ia : interfaces) ia->absorb_displacements();
+      for (const auto& ia : interfaces)
+        ia->absorb_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
   }
@@ -409,8 +426,12 @@ RunSummary StaticAnalysis::run(const std::function<void(const StepReport&)>& on_
   return impl_->run(on_step);
 }
 
-const std::vector<double>& StaticAnalysis::displacement() const { return impl_->u; }
-const DofMap& StaticAnalysis::dofs() const { return impl_->dofs; }
+const std::vector<double>& StaticAnalysis::displacement() const {
+  return impl_->u;
+}
+const DofMap& StaticAnalysis::dofs() const {
+  return impl_->dofs;
+}
 
 std::vector<double> StaticAnalysis::reaction(const std::string& set) const {
   std::vector<double> sum(impl_->dim, 0.0);

@@ -6,8 +6,8 @@
 /// contact/solver/contact_solver_options.hpp). An increment that does not converge is
 /// halved (up to the contact solver's max_cutbacks) before the run stops.
 
-#include "fem/analysis/model.hpp"
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
 
 #include <functional>
@@ -20,7 +20,7 @@ namespace bipot {
 class ResultWriter;
 
 struct AnalysisOptions {
-  int max_iterations = 25;         ///< Newton iterations per increment
+  int max_iterations = 25;          ///< Newton iterations per increment
   double residual_tolerance = 1e-8; ///< relative to the first residual of the increment
 };
 
@@ -28,12 +28,12 @@ struct AnalysisOptions {
 struct StepReport {
   std::string stage;
   int stage_index = 0;
-  int step = 0;          ///< increment within the stage, 1-based
-  int steps = 0;         ///< increments of the stage
-  int global_step = 0;   ///< converged increments so far, 1-based
-  double time = 0;       ///< pseudo-time at the end of the increment (s)
+  int step = 0;           ///< increment within the stage, 1-based
+  int steps = 0;          ///< increments of the stage
+  int global_step = 0;    ///< converged increments so far, 1-based
+  double time = 0;        ///< pseudo-time at the end of the increment (s)
   double load_factor = 0; ///< λ within the stage, in (0, 1]
-  int iterations = 0;    ///< Newton iterations
+  int iterations = 0;     ///< Newton iterations
   int linear_iterations = 0;
   double residual = 0;   ///< final relative residual
   double seconds = 0;    ///< wall time of the increment
@@ -45,8 +45,8 @@ struct StepReport {
 struct RunSummary {
   int steps = 0;
   int linear_solves = 0;
-  int linear_iterations = 0;  ///< Krylov iterations over all solves
-  int matrix_setups = 0;      ///< preconditioner/factorisation set-ups
+  int linear_iterations = 0; ///< Krylov iterations over all solves
+  int matrix_setups = 0;     ///< preconditioner/factorisation set-ups
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time
   double assembly_seconds = 0; ///< cell loops, loads, reactions

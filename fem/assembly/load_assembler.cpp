@@ -19,8 +19,7 @@ void LoadAssembler::add_pressure(const std::string& facet_set, double pressure,
   add_facet_load(facet_set, f, true, pressure, {});
 }
 
-void LoadAssembler::add_traction(const std::string& facet_set,
-                                 const std::vector<double>& traction,
+void LoadAssembler::add_traction(const std::string& facet_set, const std::vector<double>& traction,
                                  DistributedVector& f) const {
   add_facet_load(facet_set, f, false, 0.0, traction);
 }
@@ -44,7 +43,8 @@ void LoadAssembler::add_facet_load(const std::string& facet_set, DistributedVect
     dofs_.node_dofs(facet.nodes.data(), static_cast<int>(facet.nodes.size()), facet_dofs);
     for (int q = 0; q < fv->num_points(); ++q) {
       double t[3] = {0, 0, 0};
-      for (int i = 0; i < dim; ++i) t[i] = is_pressure ? -pressure * fv->normal(q)[i] : traction[i];
+      for (int i = 0; i < dim; ++i)
+        t[i] = is_pressure ? -pressure * fv->normal(q)[i] : traction[i];
       for (int a = 0; a < fv->num_nodes(); ++a)
         for (int i = 0; i < dim; ++i)
           f.add(facet_dofs[a * dim + i], fv->shape(q, a) * t[i] * fv->JxW(q));

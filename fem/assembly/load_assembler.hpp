@@ -17,8 +17,7 @@ class DistributedVector;
 class LoadAssembler {
 public:
   /// `cell_owned[c]` tells whether this rank owns cell c (facets follow their cell).
-  LoadAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs,
-                std::vector<bool> cell_owned);
+  LoadAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs, std::vector<bool> cell_owned);
 
   /// Adds ∫ N (−p n) dΓ: `pressure` (kPa) acts against the outward normal of the facets.
   void add_pressure(const std::string& facet_set, double pressure, DistributedVector& f) const;

@@ -35,8 +35,8 @@ ElementValues& SolidAssembler::values_for(CellType type) {
   auto it = values_.find(type);
   if (it == values_.end())
     it = values_
-             .emplace(type, std::make_unique<ElementValues>(type, kin_,
-                                                            stiffness_degree(type, kin_)))
+             .emplace(type,
+                      std::make_unique<ElementValues>(type, kin_, stiffness_degree(type, kin_)))
              .first;
   return *it->second;
 }
@@ -50,7 +50,8 @@ void SolidAssembler::set_initial_stress(
     ev.reinit(mesh_, c);
     for (int q = 0; q < ev.num_points(); ++q) {
       const Voigt s = sigma0(ev.point(q), mesh_.cell_regions[c]);
-      for (int i = 0; i < nv_; ++i) sigma0_[(qp_offset_[k] + q) * nv_ + i] = s(i);
+      for (int i = 0; i < nv_; ++i)
+        sigma0_[(qp_offset_[k] + q) * nv_ + i] = s(i);
     }
   }
 }
@@ -73,7 +74,8 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
     dofs_.cell_dofs(mesh_, c, cell_dofs);
     const int nd = ev.num_dofs();
     u_e.resize(nd);
-    for (int a = 0; a < nd; ++a) u_e[a] = u[cell_dofs[a]];
+    for (int a = 0; a < nd; ++a)
+      u_e[a] = u[cell_dofs[a]];
     f_e.assign(nd, 0.0);
     K_e.assign(static_cast<std::size_t>(nd) * nd, 0.0);
     B.resize(nv_, nd);
@@ -111,16 +113,19 @@ void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& c
                               SparseMatrix* K, DistributedVector& R) {
   loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
     const int nd = static_cast<int>(cell_dofs.size());
-    for (auto& v : f_e) v = -v; // residual contribution −f_int
+    for (auto& v : f_e)
+      v = -v; // residual contribution −f_int
     constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
     if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
-    for (int a = 0; a < nd; ++a) R.add(cell_dofs[a], f_e[a]);
+    for (int a = 0; a < nd; ++a)
+      R.add(cell_dofs[a], f_e[a]);
   });
 }
 
 void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f) {
   loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
-    for (std::size_t a = 0; a < cell_dofs.size(); ++a) f.add(cell_dofs[a], f_e[a]);
+    for (std::size_t a = 0; a < cell_dofs.size(); ++a)
+      f.add(cell_dofs[a], f_e[a]);
   });
 }
 
@@ -135,9 +140,11 @@ void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
   loop(
       u, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
       [&](Index p, const Voigt& sig) {
-        for (int i = 0; i < nv_; ++i) added[p * nv_ + i] = sig(i);
+        for (int i = 0; i < nv_; ++i)
+          added[p * nv_ + i] = sig(i);
       });
-  for (std::size_t i = 0; i < sigma0_.size(); ++i) sigma0_[i] += added[i];
+  for (std::size_t i = 0; i < sigma0_.size(); ++i)
+    sigma0_[i] += added[i];
   // Stresses are unchanged and the strains restart from zero.
   std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
   trial_cell_strain_ = cell_strain_;

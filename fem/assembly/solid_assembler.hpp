@@ -67,8 +67,8 @@ private:
   std::map<CellType, std::unique_ptr<ElementValues>> values_;
   // Per quadrature point only what the physics needs (σ0); strain and stress are kept as
   // cell averages for output: at 1M DOFs per-point copies cost ~300 MB.
-  std::vector<Index> qp_offset_;        ///< per owned cell, first quadrature point
-  std::vector<double> sigma0_;          ///< initial stress per point (nv each); empty = zero
+  std::vector<Index> qp_offset_; ///< per owned cell, first quadrature point
+  std::vector<double> sigma0_;   ///< initial stress per point (nv each); empty = zero
   std::vector<double> cell_strain_, cell_stress_;             ///< committed averages
   std::vector<double> trial_cell_strain_, trial_cell_stress_; ///< of the last assembly
 };

@@ -10,20 +10,28 @@ namespace bipot {
 
 const char* to_string(ParamType type) {
   switch (type) {
-  case ParamType::Real: return "real";
-  case ParamType::Integer: return "integer";
-  case ParamType::Boolean: return "boolean";
-  case ParamType::String: return "string";
+  case ParamType::Real:
+    return "real";
+  case ParamType::Integer:
+    return "integer";
+  case ParamType::Boolean:
+    return "boolean";
+  case ParamType::String:
+    return "string";
   }
   return "?";
 }
 
 std::string format_value(const ParamValue& value) {
   std::ostringstream os;
-  if (auto d = std::get_if<double>(&value)) os << *d;
-  else if (auto i = std::get_if<long>(&value)) os << *i;
-  else if (auto b = std::get_if<bool>(&value)) os << (*b ? "true" : "false");
-  else os << '"' << std::get<std::string>(value) << '"';
+  if (auto d = std::get_if<double>(&value))
+    os << *d;
+  else if (auto i = std::get_if<long>(&value))
+    os << *i;
+  else if (auto b = std::get_if<bool>(&value))
+    os << (*b ? "true" : "false");
+  else
+    os << '"' << std::get<std::string>(value) << '"';
   return os.str();
 }
 
@@ -32,8 +40,12 @@ ParamSpec& ParamSpec::with_default(ParamValue v) {
   default_value = std::move(v);
   return *this;
 }
-ParamSpec& ParamSpec::positive() { return greater_than(0.0); }
-ParamSpec& ParamSpec::non_negative() { return at_least(0.0); }
+ParamSpec& ParamSpec::positive() {
+  return greater_than(0.0);
+}
+ParamSpec& ParamSpec::non_negative() {
+  return at_least(0.0);
+}
 ParamSpec& ParamSpec::at_least(double v) {
   lower = v;
   lower_open = false;
@@ -63,19 +75,25 @@ std::string ParamSpec::range_text() const {
   if (std::isinf(lower) && std::isinf(upper)) return "";
   std::ostringstream os;
   os << (lower_open ? '(' : '[');
-  if (std::isinf(lower)) os << "-inf";
-  else os << lower;
+  if (std::isinf(lower))
+    os << "-inf";
+  else
+    os << lower;
   os << ", ";
-  if (std::isinf(upper)) os << "inf";
-  else os << upper;
+  if (std::isinf(upper))
+    os << "inf";
+  else
+    os << upper;
   os << (upper_open ? ')' : ']');
   return os.str();
 }
 
 std::optional<std::string> ParamSpec::check(const ParamValue& value) const {
   double x = 0;
-  if (auto d = std::get_if<double>(&value)) x = *d;
-  else if (auto i = std::get_if<long>(&value)) x = static_cast<double>(*i);
+  if (auto d = std::get_if<double>(&value))
+    x = *d;
+  else if (auto i = std::get_if<long>(&value))
+    x = static_cast<double>(*i);
   else if (auto s = std::get_if<std::string>(&value)) {
     if (choices.empty()) return std::nullopt;
     for (const auto& c : choices)
@@ -100,9 +118,12 @@ std::optional<std::string> ParamSpec::check(const ParamValue& value) const {
 std::string ParamSpec::summary() const {
   std::ostringstream os;
   os << to_string(type);
-  if (required) os << ", required";
-  else if (default_value) os << ", default " << format_value(*default_value);
-  else os << ", optional";
+  if (required)
+    os << ", required";
+  else if (default_value)
+    os << ", default " << format_value(*default_value);
+  else
+    os << ", optional";
   const auto range = range_text();
   if (!range.empty()) os << ", " << range;
   if (!choices.empty()) os << ", one of {" << join_names(choices) << "}";
@@ -113,7 +134,8 @@ std::string ParamSpec::summary() const {
 
 std::vector<std::string> ParamSchema::keys() const {
   std::vector<std::string> out;
-  for (const auto& s : specs_) out.push_back(s.name);
+  for (const auto& s : specs_)
+    out.push_back(s.name);
   return out;
 }
 
@@ -163,7 +185,8 @@ std::string ParamSchema::describe() const {
   std::ostringstream os;
   os << name_ << ": " << doc_ << "\n";
   if (specs_.empty()) os << "  (no parameters)\n";
-  for (const auto& s : specs_) os << "  " << s.name << " (" << s.summary() << ")\n";
+  for (const auto& s : specs_)
+    os << "  " << s.name << " (" << s.summary() << ")\n";
   return os.str();
 }
 
@@ -213,9 +236,12 @@ bool type_matches(ParamType type, ParamValue& value) {
   case ParamType::Real:
     if (auto i = std::get_if<long>(&value)) value = static_cast<double>(*i);
     return std::holds_alternative<double>(value);
-  case ParamType::Integer: return std::holds_alternative<long>(value);
-  case ParamType::Boolean: return std::holds_alternative<bool>(value);
-  case ParamType::String: return std::holds_alternative<std::string>(value);
+  case ParamType::Integer:
+    return std::holds_alternative<long>(value);
+  case ParamType::Boolean:
+    return std::holds_alternative<bool>(value);
+  case ParamType::String:
+    return std::holds_alternative<std::string>(value);
   }
   return false;
 }
@@ -237,9 +263,8 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
     ParamValue v = value;
     if (!type_matches(spec->type, v)) {
       const char* article = spec->type == ParamType::Integer ? "an " : "a ";
-      problems.push_back(
-          {key, "expected " + std::string(article) + to_string(spec->type) + ", got " +
-                    format_value(value)});
+      problems.push_back({key, "expected " + std::string(article) + to_string(spec->type) +
+                                   ", got " + format_value(value)});
       continue;
     }
     if (auto msg = spec->check(v)) {
@@ -263,7 +288,8 @@ void validate_or_throw(const ParamSchema& schema, ParameterSet& given) {
   const auto problems = validate(schema, given);
   if (problems.empty()) return;
   std::vector<std::string> lines;
-  for (const auto& p : problems) lines.push_back(schema.name() + "." + p.key + ": " + p.message);
+  for (const auto& p : problems)
+    lines.push_back(schema.name() + "." + p.key + ": " + p.message);
   throw InputError(lines);
 }
 

@@ -35,12 +35,12 @@ struct ParamSpec {
   std::vector<std::string> choices; ///< allowed strings, empty = any
 
   ParamSpec& with_default(ParamValue v);
-  ParamSpec& positive();                   ///< (0, inf)
-  ParamSpec& non_negative();               ///< [0, inf)
-  ParamSpec& at_least(double v);           ///< [v, ...
-  ParamSpec& greater_than(double v);       ///< (v, ...
-  ParamSpec& at_most(double v);            ///< ..., v]
-  ParamSpec& less_than(double v);          ///< ..., v)
+  ParamSpec& positive();             ///< (0, inf)
+  ParamSpec& non_negative();         ///< [0, inf)
+  ParamSpec& at_least(double v);     ///< [v, ...
+  ParamSpec& greater_than(double v); ///< (v, ...
+  ParamSpec& at_most(double v);      ///< ..., v]
+  ParamSpec& less_than(double v);    ///< ..., v)
   ParamSpec& one_of(std::vector<std::string> allowed);
 
   /// "[0, 1]", "(0, inf)", "" when unbounded.

@@ -29,7 +29,8 @@ public:
   bool contains(const std::string& name) const { return entries_.count(name) != 0; }
   std::vector<std::string> names() const {
     std::vector<std::string> out;
-    for (const auto& kv : entries_) out.push_back(kv.first);
+    for (const auto& kv : entries_)
+      out.push_back(kv.first);
     return out;
   }
   const std::string& what() const { return what_; }

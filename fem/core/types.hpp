@@ -17,6 +17,8 @@ using Voigt = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 using VoigtMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
 
 /// Number of Voigt components for a spatial dimension (2 -> 4, 3 -> 6).
-inline int voigt_size(int dim) { return dim == 2 ? 4 : 6; }
+inline int voigt_size(int dim) {
+  return dim == 2 ? 4 : 6;
+}
 
 } // namespace bipot

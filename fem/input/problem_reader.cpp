@@ -1,9 +1,9 @@
 #include "fem/input/problem_reader.hpp"
 
-#include "fem/core/error.hpp"
-#include "fem/input/detail/yaml_map.hpp"
-#include "fem/input/detail/sections.hpp"
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/core/error.hpp"
+#include "fem/input/detail/sections.hpp"
+#include "fem/input/detail/yaml_map.hpp"
 #include "fem/linalg/linear_solver.hpp"
 
 #include <algorithm>
@@ -38,7 +38,8 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   ProblemSpec spec;
   spec.file = diag.file();
   std::vector<std::string> keys;
-  for (const auto& kv : top_level_keys()) keys.push_back(kv.first);
+  for (const auto& kv : top_level_keys())
+    keys.push_back(kv.first);
   YamlMap top(root, "", diag, keys);
   if (!top.valid()) return spec;
 
@@ -50,11 +51,15 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   }
   const int dim = spec.kinematics == "three_d" ? 3 : 2;
 
-  if (top.has("mesh")) spec.mesh = input::read_mesh(top, dim, base_dir);
-  else top.missing("mesh", "a Gmsh file or a blocks generator");
+  if (top.has("mesh"))
+    spec.mesh = input::read_mesh(top, dim, base_dir);
+  else
+    top.missing("mesh", "a Gmsh file or a blocks generator");
 
-  if (top.has("materials")) spec.materials = input::read_materials(top);
-  else top.missing("materials", "one entry per mesh region");
+  if (top.has("materials"))
+    spec.materials = input::read_materials(top);
+  else
+    top.missing("materials", "one entry per mesh region");
 
   ParamSchema solver_schema = LinearSolver::schema();
   if (top.has("linear_solver")) {
@@ -65,11 +70,15 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
 
   if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
   if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top);
-  if (top.has("contact_solver")) spec.contact_solver = input::read_contact_solver(top);
-  else validate(contact::contact_solvers().schema(spec.contact_solver.type),
-                spec.contact_solver.parameters);
-  if (top.has("stages")) spec.stages = input::read_stages(top, dim);
-  else top.missing("stages", "at least one load stage");
+  if (top.has("contact_solver"))
+    spec.contact_solver = input::read_contact_solver(top);
+  else
+    validate(contact::contact_solvers().schema(spec.contact_solver.type),
+             spec.contact_solver.parameters);
+  if (top.has("stages"))
+    spec.stages = input::read_stages(top, dim);
+  else
+    top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
   return spec;
 }
@@ -108,7 +117,8 @@ ProblemSpec read_problem_text(const std::string& text, const std::string& file_n
 std::string describe_input_format() {
   std::ostringstream os;
   os << "bipot input file (YAML), top-level keys:\n";
-  for (const auto& [key, doc] : top_level_keys()) os << "  " << key << ": " << doc << "\n";
+  for (const auto& [key, doc] : top_level_keys())
+    os << "  " << key << ": " << doc << "\n";
   return os.str();
 }
 

@@ -31,11 +31,11 @@ struct MaterialSpec {
 /// Initial (e.g. geostatic) stress in a region; tension positive.
 struct InitialStressSpec {
   std::string region;
-  std::string type;             ///< "geostatic" or "constant"
-  double unit_weight = 0;       ///< kN/m³ (geostatic)
+  std::string type;               ///< "geostatic" or "constant"
+  double unit_weight = 0;         ///< kN/m³ (geostatic)
   double lateral_coefficient = 1; ///< K0 (geostatic): horizontal = K0 × vertical
-  double surface = 0;           ///< vertical coordinate of the free surface (geostatic)
-  std::vector<double> stress;   ///< Voigt components (constant)
+  double surface = 0;             ///< vertical coordinate of the free surface (geostatic)
+  std::vector<double> stress;     ///< Voigt components (constant)
   std::string where;
 };
 
@@ -49,8 +49,8 @@ struct DirichletSpec {
 struct LoadSpec {
   enum class Type { Pressure, Traction, Gravity };
   Type type = Type::Pressure;
-  std::string set;           ///< facet set (pressure, traction)
-  double pressure = 0;       ///< kPa, acts against the outward normal
+  std::string set;              ///< facet set (pressure, traction)
+  double pressure = 0;          ///< kPa, acts against the outward normal
   std::vector<double> traction; ///< kPa, one per spatial component
   std::string where;
 };
@@ -60,7 +60,7 @@ struct LoadSpec {
 struct StageSpec {
   std::string name;
   int increments = 1;
-  double duration = 1.0; ///< pseudo-time (s) spanned by the stage
+  double duration = 1.0;            ///< pseudo-time (s) spanned by the stage
   bool reset_displacements = false; ///< zero the displacements at the end, keep stresses
   std::vector<DirichletSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
@@ -92,11 +92,11 @@ struct OutputSpec {
 };
 
 struct ProblemSpec {
-  std::string file;                    ///< the input file as given
+  std::string file; ///< the input file as given
   std::string kinematics = "plane_strain";
   MeshSpec mesh;
   std::vector<MaterialSpec> materials;
-  ParameterSet linear_solver;          ///< validated against LinearSolver's schema
+  ParameterSet linear_solver; ///< validated against LinearSolver's schema
   std::vector<InitialStressSpec> initial_stress;
   std::vector<InterfaceSpec> interfaces;
   ContactSolverSpec contact_solver;

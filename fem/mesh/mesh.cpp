@@ -18,7 +18,8 @@ int Mesh::region_id(const std::string& name) {
   auto it = regions.find(name);
   if (it != regions.end()) return it->second;
   int id = 0;
-  for (const auto& kv : regions) id = std::max(id, kv.second + 1);
+  for (const auto& kv : regions)
+    id = std::max(id, kv.second + 1);
   regions[name] = id;
   return id;
 }
@@ -33,7 +34,8 @@ std::vector<Index> Mesh::facet_set_nodes(const std::string& name) const {
   std::vector<Index> out;
   auto it = facet_sets.find(name);
   if (it == facet_sets.end()) return out;
-  for (const auto& f : it->second) out.insert(out.end(), f.nodes.begin(), f.nodes.end());
+  for (const auto& f : it->second)
+    out.insert(out.end(), f.nodes.begin(), f.nodes.end());
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -56,8 +58,7 @@ void Mesh::check_consistency() const {
   for (const auto& [name, facets] : facet_sets)
     for (const auto& f : facets) {
       for (Index i : f.nodes)
-        if (i < 0 || i >= n)
-          throw Error("mesh: facet set '" + name + "' references missing node");
+        if (i < 0 || i >= n) throw Error("mesh: facet set '" + name + "' references missing node");
       if (f.cell >= num_cells())
         throw Error("mesh: facet set '" + name + "' references missing cell");
     }

@@ -29,9 +29,9 @@ struct Mesh {
   std::vector<Index> cell_nodes;         ///< connectivity, Gmsh node ordering
   std::vector<int> cell_regions;         ///< region id per cell
 
-  std::map<std::string, int> regions;                       ///< region name -> id
-  std::map<std::string, std::vector<Index>> node_sets;      ///< sorted, unique node ids
-  std::map<std::string, std::vector<Facet>> facet_sets;     ///< boundary facets by name
+  std::map<std::string, int> regions;                   ///< region name -> id
+  std::map<std::string, std::vector<Index>> node_sets;  ///< sorted, unique node ids
+  std::map<std::string, std::vector<Facet>> facet_sets; ///< boundary facets by name
 
   Index num_nodes() const { return static_cast<Index>(nodes.size()); }
   Index num_cells() const { return static_cast<Index>(cell_types.size()); }

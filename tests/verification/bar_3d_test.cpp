@@ -18,7 +18,9 @@ TEST_P(Bar3d, UniaxialStressIsExact) {
   const double E = 3.0e6, nu = 0.3, sigma = 250.0, L = 2.0, W = 0.5, H = 0.4;
   const std::string text =
       "kinematics: three_d\n"
-      "mesh:\n  blocks:\n    cell: " + GetParam() + "\n"
+      "mesh:\n  blocks:\n    cell: " +
+      GetParam() +
+      "\n"
       "    x: {breaks: [0, 2.0], cells: [6], grading: [1.2]}\n"
       "    y: {breaks: [0, 0.5], cells: [2]}\n"
       "    z: {breaks: [0, 0.4], cells: [2]}\n"

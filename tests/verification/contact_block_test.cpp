@@ -49,7 +49,8 @@ const std::string press_shear_lift =
 
 std::string coulomb(double mu) {
   return "interfaces:\n  - name: joint\n    between: [base, block]\n    law: coulomb_signorini\n"
-         "    parameters: {friction_coefficient: " + std::to_string(mu) + "}\n";
+         "    parameters: {friction_coefficient: " +
+         std::to_string(mu) + "}\n";
 }
 
 std::string solver(const std::string& type) {
@@ -71,7 +72,8 @@ StageForces run(const std::string& text) {
     const auto& ia = *analysis.interfaces()[0];
     out.resultant.push_back(ia.resultant());
     int stick = 0;
-    for (const auto& r : ia.results()) stick += r.status == contact::ContactStatus::Stick;
+    for (const auto& r : ia.results())
+      stick += r.status == contact::ContactStatus::Stick;
     out.sticking.push_back(stick);
   });
   out.u = analysis.displacement();
@@ -104,17 +106,16 @@ TEST(ContactBlock, SlidesAtMuTimesNormalForceAndOpensWhenLifted) {
 
 TEST(ContactBlock, SticksBeforeSliding) {
   const double mu = 0.3;
-  const std::string small_shear =
-      "  - name: press\n    boundary_conditions:\n"
-      "      - {set: bottom, component: x, value: 0}\n"
-      "      - {set: bottom, component: y, value: 0}\n"
-      "      - {set: top, component: x, value: 0}\n"
-      "      - {set: top, component: y, value: -1.0e-3}\n"
-      "  - name: nudge\n    boundary_conditions:\n"
-      "      - {set: bottom, component: x, value: 0}\n"
-      "      - {set: bottom, component: y, value: 0}\n"
-      "      - {set: top, component: x, value: 1.0e-5}\n"
-      "      - {set: top, component: y, value: -1.0e-3}\n";
+  const std::string small_shear = "  - name: press\n    boundary_conditions:\n"
+                                  "      - {set: bottom, component: x, value: 0}\n"
+                                  "      - {set: bottom, component: y, value: 0}\n"
+                                  "      - {set: top, component: x, value: 0}\n"
+                                  "      - {set: top, component: y, value: -1.0e-3}\n"
+                                  "  - name: nudge\n    boundary_conditions:\n"
+                                  "      - {set: bottom, component: x, value: 0}\n"
+                                  "      - {set: bottom, component: y, value: 0}\n"
+                                  "      - {set: top, component: x, value: 1.0e-5}\n"
+                                  "      - {set: top, component: y, value: -1.0e-3}\n";
   const auto res = run(block_input(coulomb(mu), solver("semismooth_newton"), small_shear));
   const auto& f = res.resultant.back();
   EXPECT_GT(std::abs(f[0]), 0.0);
@@ -140,12 +141,11 @@ TEST(ContactBlock, RccmWithoutAdhesionIsCoulombSignorini) {
 TEST(ContactBlock, PerfectBondingEqualsNoInterface) {
   const std::string bonded =
       "interfaces:\n  - name: joint\n    between: [base, block]\n    law: perfect_bonding\n";
-  const std::string press =
-      "  - name: press\n    boundary_conditions:\n"
-      "      - {set: bottom, component: x, value: 0}\n"
-      "      - {set: bottom, component: y, value: 0}\n"
-      "      - {set: top, component: x, value: 2.0e-3}\n"
-      "      - {set: top, component: y, value: 1.0e-3}\n";
+  const std::string press = "  - name: press\n    boundary_conditions:\n"
+                            "      - {set: bottom, component: x, value: 0}\n"
+                            "      - {set: bottom, component: y, value: 0}\n"
+                            "      - {set: top, component: x, value: 2.0e-3}\n"
+                            "      - {set: top, component: y, value: 1.0e-3}\n";
   const auto a = run(block_input(bonded, "", press));
   const auto b = run(block_input("", "", press));
   ASSERT_EQ(a.u.size(), b.u.size());

@@ -60,7 +60,8 @@ double l2_error(const Model& model, const std::vector<double>& u, bool polar) {
     for (int q = 0; q < ev.num_points(); ++q) {
       double uh[2] = {0, 0};
       for (int n = 0; n < ev.num_nodes(); ++n)
-        for (int i = 0; i < 2; ++i) uh[i] += ev.shape(q, n) * u[mesh.cell(c)[n] * 2 + i];
+        for (int i = 0; i < 2; ++i)
+          uh[i] += ev.shape(q, n) * u[mesh.cell(c)[n] * 2 + i];
       const auto& x = ev.point(q);
       double ue[2];
       if (polar) {
@@ -80,8 +81,8 @@ double l2_error(const Model& model, const std::vector<double>& u, bool polar) {
 double solve_error(const std::string& kin, const std::string& cell, int n) {
   const bool polar = kin == "plane_strain";
   // Refinement keeps the cells' shape: the axisymmetric strip is refined in z as well.
-  Model model = build_model(read_problem_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25),
-                                              "lame_" + kin + ".yaml"));
+  Model model = build_model(
+      read_problem_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25), "lame_" + kin + ".yaml"));
   if (polar) // (r, theta) -> (x, y): orientation-preserving, so facet sets stay outward
     for (auto& x : model.mesh.nodes) {
       const double r = x[0], t = x[1];
@@ -104,7 +105,8 @@ class LameConvergence : public testing::TestWithParam<LameCase> {};
 TEST_P(LameConvergence, L2ErrorRate) {
   const auto& c = GetParam();
   std::vector<double> errors;
-  for (int level = 0; level < 3; ++level) errors.push_back(solve_error(c.kin, c.cell, c.n0 << level));
+  for (int level = 0; level < 3; ++level)
+    errors.push_back(solve_error(c.kin, c.cell, c.n0 << level));
   for (int level = 1; level < 3; ++level) {
     const double rate = std::log2(errors[level - 1] / errors[level]);
     EXPECT_GE(rate, c.min_rate) << c.kin << " " << c.cell << " errors " << errors[level - 1]
@@ -118,16 +120,19 @@ std::string lame_name(const testing::TestParamInfo<LameCase>& info) {
   return info.param.kin + "_" + info.param.cell;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Cylinder, LameConvergence,
-    // Coarsest meshes chosen in the asymptotic range: axisymmetric tri3 measured rates
-    // 1.82, 1.90, 1.96, 1.99 from 8 cells radially, so the sequences start at 16 (linear)
-    // and 8 (quadratic).
-    testing::Values(LameCase{"axisymmetric", "quad4", 16, 1.9}, LameCase{"axisymmetric", "tri3", 16, 1.9},
-                    LameCase{"axisymmetric", "quad8", 8, 2.9}, LameCase{"axisymmetric", "tri6", 8, 2.9},
-                    LameCase{"plane_strain", "quad4", 16, 1.9}, LameCase{"plane_strain", "tri3", 16, 1.9},
-                    LameCase{"plane_strain", "quad8", 8, 2.9}, LameCase{"plane_strain", "tri6", 8, 2.9}),
-    lame_name);
+INSTANTIATE_TEST_SUITE_P(Cylinder, LameConvergence,
+                         // Coarsest meshes chosen in the asymptotic range: axisymmetric tri3
+                         // measured rates 1.82, 1.90, 1.96, 1.99 from 8 cells radially, so the
+                         // sequences start at 16 (linear) and 8 (quadratic).
+                         testing::Values(LameCase{"axisymmetric", "quad4", 16, 1.9},
+                                         LameCase{"axisymmetric", "tri3", 16, 1.9},
+                                         LameCase{"axisymmetric", "quad8", 8, 2.9},
+                                         LameCase{"axisymmetric", "tri6", 8, 2.9},
+                                         LameCase{"plane_strain", "quad4", 16, 1.9},
+                                         LameCase{"plane_strain", "tri3", 16, 1.9},
+                                         LameCase{"plane_strain", "quad8", 8, 2.9},
+                                         LameCase{"plane_strain", "tri6", 8, 2.9}),
+                         lame_name);
 
 } // namespace
 } // namespace bipot
@@ -138,7 +143,8 @@ namespace {
 // The shipped example (run by scripts/run.sh) reproduces the closed form at the bore and
 // the outer surface: quad8 with 16 graded cells, discretisation error well below 1e-5.
 TEST(ThickCylinderExample, MatchesLame) {
-  const Model model = build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/thick_cylinder.yaml"));
+  const Model model =
+      build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/thick_cylinder.yaml"));
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& u = analysis.displacement();

@@ -23,9 +23,13 @@ std::vector<double> solve(const std::string& method) {
       "    y: {breaks: [-5.0, 0.0], cells: [12], grading: [0.9]}\n"
       "    regions: [pile, soil]\n"
       "materials:\n"
-      "  pile: {type: linear_elastic, youngs_modulus: 3.0e6, poissons_ratio: 0.3, unit_weight: 24}\n"
-      "  soil: {type: linear_elastic, youngs_modulus: 3.0e4, poissons_ratio: 0.33, unit_weight: 18}\n"
-      "linear_solver: {method: " + method + ", preconditioner: muelu, tolerance: 1.0e-14, max_iterations: 5000}\n"
+      "  pile: {type: linear_elastic, youngs_modulus: 3.0e6, poissons_ratio: 0.3, unit_weight: "
+      "24}\n"
+      "  soil: {type: linear_elastic, youngs_modulus: 3.0e4, poissons_ratio: 0.33, unit_weight: "
+      "18}\n"
+      "linear_solver: {method: " +
+      method +
+      ", preconditioner: muelu, tolerance: 1.0e-14, max_iterations: 5000}\n"
       "stages:\n  - name: load\n    increments: 2\n    boundary_conditions:\n"
       "      - {set: left, component: r, value: 0}\n"
       "      - {set: right, component: r, value: 0}\n"
@@ -43,14 +47,16 @@ void compare_or_write(const std::string& method) {
   if (mpi_size() == 1) {
     std::ofstream out(file);
     out << std::setprecision(17);
-    for (double v : u) out << v << "\n";
+    for (double v : u)
+      out << v << "\n";
     ASSERT_TRUE(out.good());
     return;
   }
   std::ifstream in(file);
   ASSERT_TRUE(in.good()) << "run the 1-rank test first (CTest fixture): " << file;
   std::vector<double> ref;
-  for (double v; in >> v;) ref.push_back(v);
+  for (double v; in >> v;)
+    ref.push_back(v);
   ASSERT_EQ(ref.size(), u.size());
   double diff = 0, norm = 0;
   for (std::size_t i = 0; i < u.size(); ++i) {
@@ -60,10 +66,14 @@ void compare_or_write(const std::string& method) {
   EXPECT_LT(std::sqrt(diff / norm), 1e-10);
 }
 
-TEST(ParallelConsistency, DirectSolver) { compare_or_write("direct"); }
+TEST(ParallelConsistency, DirectSolver) {
+  compare_or_write("direct");
+}
 // CG + MueLu to 1e-14: the aggregation differs between 1 and 2 ranks, so agreement rests on
 // the tight tolerance.
-TEST(ParallelConsistency, CgMueLu) { compare_or_write("cg"); }
+TEST(ParallelConsistency, CgMueLu) {
+  compare_or_write("cg");
+}
 
 } // namespace
 } // namespace bipot

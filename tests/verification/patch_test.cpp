@@ -24,13 +24,15 @@ namespace {
 // back at the middle of their (straight) edges, so cells are genuinely distorted.
 void distort(Mesh& mesh, double amount) {
   std::set<Index> boundary;
-  for (const auto& f : boundary_facets(mesh)) boundary.insert(f.nodes.begin(), f.nodes.end());
+  for (const auto& f : boundary_facets(mesh))
+    boundary.insert(f.nodes.begin(), f.nodes.end());
   std::vector<bool> corner(mesh.num_nodes(), false);
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const int corners = cell_order(mesh.cell_types[c]) == 2
                             ? (mesh.cell_types[c] == CellType::Tri6 ? 3 : 4)
                             : mesh.cell_num_nodes(c);
-    for (int a = 0; a < corners; ++a) corner[mesh.cell(c)[a]] = true;
+    for (int a = 0; a < corners; ++a)
+      corner[mesh.cell(c)[a]] = true;
   }
   for (Index n = 0; n < mesh.num_nodes(); ++n) {
     if (boundary.count(n) || !corner[n]) continue;
@@ -47,7 +49,8 @@ void distort(Mesh& mesh, double amount) {
     const int nc = type == CellType::Tri6 ? 3 : 4;
     for (int e = 0; e < nc; ++e) {
       const Index a = mesh.cell(c)[e], b = mesh.cell(c)[(e + 1) % nc], m = mesh.cell(c)[nc + e];
-      for (int i = 0; i < 3; ++i) mesh.nodes[m][i] = 0.5 * (mesh.nodes[a][i] + mesh.nodes[b][i]);
+      for (int i = 0; i < 3; ++i)
+        mesh.nodes[m][i] = 0.5 * (mesh.nodes[a][i] + mesh.nodes[b][i]);
     }
   }
 }
@@ -75,12 +78,12 @@ TEST_P(PatchTest, LinearFieldIsReproduced) {
   // constant-strain field in equilibrium: eps_rr = eps_tt removes (s_rr - s_tt)/r from the
   // radial equation, and no shear removes tau_rz / r from the axial one.
   auto exact = [&](const std::array<double, 3>& x, int i) {
-    if (kin == Kinematics::Axisymmetric)
-      return i == 0 ? 2e-3 * x[0] : -3e-3 * x[1] + 0.5e-3;
+    if (kin == Kinematics::Axisymmetric) return i == 0 ? 2e-3 * x[0] : -3e-3 * x[1] + 0.5e-3;
     const double A[3][3] = {{1e-3, 2e-3, -1e-3}, {-0.5e-3, 3e-3, 1.5e-3}, {0.7e-3, -2e-3, 1e-3}};
     const double c[3] = {1e-3, -2e-3, 3e-3};
     double v = c[i];
-    for (int j = 0; j < dim; ++j) v += A[i][j] * x[j];
+    for (int j = 0; j < dim; ++j)
+      v += A[i][j] * x[j];
     return v;
   };
 
@@ -90,8 +93,7 @@ TEST_P(PatchTest, LinearFieldIsReproduced) {
   std::vector<Index> owned_cells;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const Index* nodes = mesh.cell(c);
-    if (dist.owner_of_node(*std::min_element(nodes, nodes + mesh.cell_num_nodes(c))) ==
-        dist.rank())
+    if (dist.owner_of_node(*std::min_element(nodes, nodes + mesh.cell_num_nodes(c))) == dist.rank())
       owned_cells.push_back(c);
   }
   SolidAssembler solid(mesh, kin, dofs, {&steel}, owned_cells);
@@ -102,9 +104,11 @@ TEST_P(PatchTest, LinearFieldIsReproduced) {
 
   Constraints constraints;
   std::set<Index> boundary;
-  for (const auto& f : boundary_facets(mesh)) boundary.insert(f.nodes.begin(), f.nodes.end());
+  for (const auto& f : boundary_facets(mesh))
+    boundary.insert(f.nodes.begin(), f.nodes.end());
   for (Index n : boundary)
-    for (int i = 0; i < dim; ++i) constraints.set(dofs.dof(n, i), exact(mesh.nodes[n], i));
+    for (int i = 0; i < dim; ++i)
+      constraints.set(dofs.dof(n, i), exact(mesh.nodes[n], i));
 
   std::vector<double> u(dofs.num_dofs(), 0.0);
   K.set_zero();
@@ -138,28 +142,31 @@ TEST_P(PatchTest, LinearFieldIsReproduced) {
   solid.cell_averages(strain, stress);
   const int nv = voigt_size(dim);
   Voigt eps = Voigt::Zero(nv);
-  if (kin == Kinematics::Axisymmetric) eps << 2e-3, -3e-3, 2e-3, 0.0;
-  else if (dim == 2) eps << 1e-3, 3e-3, 0.0, 2e-3 - 0.5e-3;
-  else eps << 1e-3, 3e-3, 1e-3, 2e-3 - 0.5e-3, 1.5e-3 - 2e-3, -1e-3 + 0.7e-3;
+  if (kin == Kinematics::Axisymmetric)
+    eps << 2e-3, -3e-3, 2e-3, 0.0;
+  else if (dim == 2)
+    eps << 1e-3, 3e-3, 0.0, 2e-3 - 0.5e-3;
+  else
+    eps << 1e-3, 3e-3, 1e-3, 2e-3 - 0.5e-3, 1.5e-3 - 2e-3, -1e-3 + 0.7e-3;
   const Voigt sigma = steel.elasticity_matrix(nv) * eps;
   for (std::size_t k = 0; k < solid.owned_cells().size(); ++k)
     for (int i = 0; i < nv; ++i)
-      EXPECT_NEAR(stress[k * nv + i], sigma(i), 1e-9 * sigma.norm()) << "cell " << k << " comp " << i;
+      EXPECT_NEAR(stress[k * nv + i], sigma(i), 1e-9 * sigma.norm())
+          << "cell " << k << " comp " << i;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllElements, PatchTest,
-    testing::Values(PatchCase{CellType::Tri3, Kinematics::PlaneStrain},
-                    PatchCase{CellType::Tri6, Kinematics::PlaneStrain},
-                    PatchCase{CellType::Quad4, Kinematics::PlaneStrain},
-                    PatchCase{CellType::Quad8, Kinematics::PlaneStrain},
-                    PatchCase{CellType::Tri3, Kinematics::Axisymmetric},
-                    PatchCase{CellType::Tri6, Kinematics::Axisymmetric},
-                    PatchCase{CellType::Quad4, Kinematics::Axisymmetric},
-                    PatchCase{CellType::Quad8, Kinematics::Axisymmetric},
-                    PatchCase{CellType::Tet4, Kinematics::ThreeD},
-                    PatchCase{CellType::Hex8, Kinematics::ThreeD}),
-    case_name);
+INSTANTIATE_TEST_SUITE_P(AllElements, PatchTest,
+                         testing::Values(PatchCase{CellType::Tri3, Kinematics::PlaneStrain},
+                                         PatchCase{CellType::Tri6, Kinematics::PlaneStrain},
+                                         PatchCase{CellType::Quad4, Kinematics::PlaneStrain},
+                                         PatchCase{CellType::Quad8, Kinematics::PlaneStrain},
+                                         PatchCase{CellType::Tri3, Kinematics::Axisymmetric},
+                                         PatchCase{CellType::Tri6, Kinematics::Axisymmetric},
+                                         PatchCase{CellType::Quad4, Kinematics::Axisymmetric},
+                                         PatchCase{CellType::Quad8, Kinematics::Axisymmetric},
+                                         PatchCase{CellType::Tet4, Kinematics::ThreeD},
+                                         PatchCase{CellType::Hex8, Kinematics::ThreeD}),
+                         case_name);
 
 } // namespace
 } // namespace bipot

@@ -1,8 +1,8 @@
 #include "fem/input/detail/sections.hpp"
 
-#include "fem/core/nearest_name.hpp"
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/core/nearest_name.hpp"
 #include "materials/material_registry.hpp"
 
 #include <algorithm>
@@ -25,11 +25,13 @@ AxisSegments read_axis(const YamlMap& parent, const std::string& key) {
     if (!(axis.breaks[i] > axis.breaks[i - 1]))
       m.error("breaks", "break points must increase strictly");
   if (!axis.cells.empty() && axis.cells.size() != segments)
-    m.error("cells", "expected " + std::to_string(segments) + " cell counts (one per segment), got " +
+    m.error("cells", "expected " + std::to_string(segments) +
+                         " cell counts (one per segment), got " +
                          std::to_string(axis.cells.size()));
   for (int c : axis.cells)
     if (c < 1) m.error("cells", "cell counts must be at least 1");
-  if (axis.grading.empty()) axis.grading.assign(segments, 1.0);
+  if (axis.grading.empty())
+    axis.grading.assign(segments, 1.0);
   else if (axis.grading.size() != segments)
     m.error("grading", "expected " + std::to_string(segments) + " grading ratios, got " +
                            std::to_string(axis.grading.size()));
@@ -76,13 +78,15 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
     const std::vector<std::string> cells3 = {"tet4", "hex8"};
     const auto& allowed = dim == 3 ? cells3 : cells2;
     if (std::find(allowed.begin(), allowed.end(), mesh.cell) == allowed.end())
-      b.error("cell", "cell type '" + mesh.cell + "' is not available in " +
-                          std::to_string(dim) + "D; allowed: " + join_names(allowed));
+      b.error("cell", "cell type '" + mesh.cell + "' is not available in " + std::to_string(dim) +
+                          "D; allowed: " + join_names(allowed));
     for (const char* axis : {"x", "y", "z"}) {
       if (std::string(axis) == "z" && dim == 2) continue;
       AxisSegments& a = axis[0] == 'x' ? mesh.x : (axis[0] == 'y' ? mesh.y : mesh.z);
-      if (b.has(axis)) a = read_axis(b, axis);
-      else b.missing(axis, "breaks, cells and optional grading along this axis");
+      if (b.has(axis))
+        a = read_axis(b, axis);
+      else
+        b.missing(axis, "breaks, cells and optional grading along this axis");
     }
     b.strings("regions", mesh.block_regions, true);
     std::size_t blocks = std::max<std::size_t>(mesh.x.breaks.size(), 1) - 1;
@@ -118,16 +122,24 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
       bool b = false;
       bool ok = true;
       switch (spec->type) {
-      case ParamType::Real: ok = decode_real(v, d), value = d; break;
-      case ParamType::Integer: ok = decode_integer(v, i), value = i; break;
-      case ParamType::Boolean: ok = decode_boolean(v, b), value = b; break;
-      case ParamType::String: ok = v.IsScalar(); break;
+      case ParamType::Real:
+        ok = decode_real(v, d), value = d;
+        break;
+      case ParamType::Integer:
+        ok = decode_integer(v, i), value = i;
+        break;
+      case ParamType::Boolean:
+        ok = decode_boolean(v, b), value = b;
+        break;
+      case ParamType::String:
+        ok = v.IsScalar();
+        break;
       }
       if (!ok) {
-        const char* what = spec->type == ParamType::Integer ? "an integer"
-                           : spec->type == ParamType::Real  ? "a real number"
+        const char* what = spec->type == ParamType::Integer   ? "an integer"
+                           : spec->type == ParamType::Real    ? "a real number"
                            : spec->type == ParamType::Boolean ? "true or false"
-                                                               : "a string";
+                                                              : "a string";
         diag.error(kv.first, join_path(path, key),
                    std::string("expected ") + what + ", got " + describe_node(v));
         continue;
@@ -228,9 +240,9 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     StageSpec st;
     const std::string path = index_path("stages", i);
-    YamlMap m(list[i], path, top.diag(),
-              {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-               "loads"});
+    YamlMap m(
+        list[i], path, top.diag(),
+        {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads"});
     if (!m.valid()) continue;
     st.where = top.diag().where(list[i], path);
     st.name = "stage" + std::to_string(i + 1);
@@ -254,8 +266,8 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
         if (b.string("component", comp, true) && b.has("component")) {
           bc.component = component_index(comp, dim, dim == 2);
           if (bc.component < 0)
-            b.error("component", "unknown component '" + comp + "'; allowed: " +
-                                     (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
+            b.error("component", "unknown component '" + comp +
+                                     "'; allowed: " + (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
         }
         b.real("value", bc.value);
         st.boundary_conditions.push_back(bc);
@@ -348,8 +360,8 @@ ContactSolverSpec read_contact_solver(const YamlMap& top) {
   const YAML::Node node = top.node("contact_solver");
   spec.where = top.where("contact_solver");
   if (!node.IsMap() || !node["type"]) {
-    top.error("contact_solver", "expected {type: <solver>, ...}; registered solvers: " +
-                                    join_names(solvers.names()));
+    top.error("contact_solver",
+              "expected {type: <solver>, ...}; registered solvers: " + join_names(solvers.names()));
     return spec;
   }
   spec.type = node["type"].Scalar();
@@ -357,8 +369,8 @@ ContactSolverSpec read_contact_solver(const YamlMap& top) {
     top.diag().error(node["type"], "contact_solver.type", solvers.unknown_message(spec.type));
     return spec;
   }
-  spec.parameters = read_parameters_node(node, "contact_solver", top.diag(),
-                                         solvers.schema(spec.type), {"type"});
+  spec.parameters =
+      read_parameters_node(node, "contact_solver", top.diag(), solvers.schema(spec.type), {"type"});
   return spec;
 }
 

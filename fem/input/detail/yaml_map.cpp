@@ -115,8 +115,8 @@ void YamlMap::error(const std::string& key, const std::string& message) const {
 
 namespace {
 template <class Decode, class T>
-bool read_scalar(const YamlMap& m, const std::string& key, T& out, bool required,
-                 const char* what, Decode decode) {
+bool read_scalar(const YamlMap& m, const std::string& key, T& out, bool required, const char* what,
+                 Decode decode) {
   if (!m.has(key)) {
     if (required && m.valid()) m.missing(key);
     return !required;
@@ -189,8 +189,7 @@ bool YamlMap::reals(const std::string& key, std::vector<double>& out, bool requi
 bool YamlMap::integers(const std::string& key, std::vector<int>& out, bool required) const {
   return read_list(*this, key, out, required, "integers", decode_int);
 }
-bool YamlMap::strings(const std::string& key, std::vector<std::string>& out,
-                      bool required) const {
+bool YamlMap::strings(const std::string& key, std::vector<std::string>& out, bool required) const {
   return read_list(*this, key, out, required, "strings", decode_string);
 }
 

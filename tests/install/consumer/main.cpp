@@ -19,7 +19,8 @@ int main() {
   const double square[12] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0};
   ev.reinit(square);
   double area = 0;
-  for (int q = 0; q < ev.num_points(); ++q) area += ev.JxW(q);
+  for (int q = 0; q < ev.num_points(); ++q)
+    area += ev.JxW(q);
   const bool ok = std::abs(sig(0) - 2.4e5) < 1e-6 && std::abs(area - 4.0) < 1e-12;
   std::cout << "sigma_xx = " << sig(0) << ", area = " << area << (ok ? " ok" : " WRONG") << "\n";
   return ok ? 0 : 1;

@@ -47,12 +47,15 @@ TEST(ParamSchema, ValidateReportsEveryProblem) {
   const auto problems = validate(sample_schema(), p);
   ASSERT_EQ(problems.size(), 5u);
   std::map<std::string, std::string> by_key;
-  for (const auto& pr : problems) by_key[pr.key] = pr.message;
+  for (const auto& pr : problems)
+    by_key[pr.key] = pr.message;
   EXPECT_EQ(by_key["fraction"], "value 1.5 is out of range [0, 1]");
   EXPECT_EQ(by_key["count"], "expected an integer, got 2.5");
-  EXPECT_EQ(by_key["method"], "value \"gmress\" is not one of: cg, gmres (did you mean \"gmres\"?)");
-  EXPECT_EQ(by_key["stifness"], "unknown key for 'sample' (did you mean 'stiffness'?); allowed keys: "
-                                "stiffness, fraction, count, flag, method");
+  EXPECT_EQ(by_key["method"],
+            "value \"gmress\" is not one of: cg, gmres (did you mean \"gmres\"?)");
+  EXPECT_EQ(by_key["stifness"],
+            "unknown key for 'sample' (did you mean 'stiffness'?); allowed keys: "
+            "stiffness, fraction, count, flag, method");
   EXPECT_EQ(by_key["stiffness"].substr(0, 22), "missing required key (");
 }
 

@@ -9,21 +9,21 @@ namespace bipot {
 namespace {
 
 const std::string good =
-    "kinematics: axisymmetric\n"                                                     // 1
-    "mesh:\n"                                                                        // 2
-    "  blocks:\n"                                                                    // 3
-    "    cell: quad4\n"                                                              // 4
-    "    x: {breaks: [0, 1], cells: [2]}\n"                                          // 5
-    "    y: {breaks: [0, 1], cells: [2]}\n"                                          // 6
-    "    regions: [soil]\n"                                                          // 7
-    "materials:\n"                                                                   // 8
-    "  soil: {type: linear_elastic, youngs_modulus: 3.0e4, poissons_ratio: 0.33}\n"  // 9
-    "stages:\n"                                                                      // 10
-    "  - name: load\n"                                                               // 11
-    "    boundary_conditions:\n"                                                     // 12
-    "      - {set: bottom, component: z, value: 0}\n"                                // 13
-    "    loads:\n"                                                                   // 14
-    "      - {type: pressure, set: top, value: 10}\n";                               // 15
+    "kinematics: axisymmetric\n"                                                    // 1
+    "mesh:\n"                                                                       // 2
+    "  blocks:\n"                                                                   // 3
+    "    cell: quad4\n"                                                             // 4
+    "    x: {breaks: [0, 1], cells: [2]}\n"                                         // 5
+    "    y: {breaks: [0, 1], cells: [2]}\n"                                         // 6
+    "    regions: [soil]\n"                                                         // 7
+    "materials:\n"                                                                  // 8
+    "  soil: {type: linear_elastic, youngs_modulus: 3.0e4, poissons_ratio: 0.33}\n" // 9
+    "stages:\n"                                                                     // 10
+    "  - name: load\n"                                                              // 11
+    "    boundary_conditions:\n"                                                    // 12
+    "      - {set: bottom, component: z, value: 0}\n"                               // 13
+    "    loads:\n"                                                                  // 14
+    "      - {type: pressure, set: top, value: 10}\n";                              // 15
 
 std::vector<std::string> problems_of(const std::string& text) {
   try {
@@ -44,7 +44,8 @@ std::string replace(std::string text, const std::string& from, const std::string
   for (const auto& p : problems)
     if (p.find(s) != std::string::npos) return ::testing::AssertionSuccess();
   std::string all;
-  for (const auto& p : problems) all += "\n  " + p;
+  for (const auto& p : problems)
+    all += "\n  " + p;
   return ::testing::AssertionFailure() << "no problem contains \"" << s << "\" in:" << all;
 }
 
@@ -52,7 +53,7 @@ TEST(ProblemReader, GoodInputParses) {
   const ProblemSpec spec = read_problem_text(good, "in.yaml");
   EXPECT_EQ(spec.kinematics, "axisymmetric");
   ASSERT_EQ(spec.stages.size(), 1u);
-  EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1); // z is the axial component
+  EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1);    // z is the axial component
   EXPECT_EQ(spec.materials[0].parameters.real("unit_weight"), 0.0); // default filled in
   EXPECT_TRUE(problems_of(good).empty());
 }
@@ -84,10 +85,12 @@ TEST(ProblemReader, WrongTypeAndOutOfRange) {
 }
 
 TEST(ProblemReader, MissingRequiredKey) {
-  const auto p = problems_of(replace(good, "    loads:\n      - {type: pressure, set: top, value: 10}\n",
-                                     "    loads:\n      - {type: pressure, set: top}\n"));
+  const auto p =
+      problems_of(replace(good, "    loads:\n      - {type: pressure, set: top, value: 10}\n",
+                          "    loads:\n      - {type: pressure, set: top}\n"));
   EXPECT_TRUE(has(p, "stages[0].loads[0].value: missing required key"));
-  const auto q = problems_of(replace(good, "kinematics: axisymmetric\n", "kinematics: axisymmetric\nmeshh: 1\n"));
+  const auto q = problems_of(
+      replace(good, "kinematics: axisymmetric\n", "kinematics: axisymmetric\nmeshh: 1\n"));
   EXPECT_TRUE(has(q, "meshh: unknown key (did you mean 'mesh'?)"));
 }
 

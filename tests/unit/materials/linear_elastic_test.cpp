@@ -24,7 +24,8 @@ TEST(LinearElastic, UniaxialStressGivesYoungsModulusAndPoisson3D) {
   VoigtMatrix D;
   m.update(eps, nullptr, sig, D, nullptr);
   EXPECT_NEAR(sig(0), s, tol * s);
-  for (int i = 1; i < 6; ++i) EXPECT_NEAR(sig(i), 0.0, tol * s);
+  for (int i = 1; i < 6; ++i)
+    EXPECT_NEAR(sig(i), 0.0, tol * s);
 }
 
 TEST(LinearElastic, PureShearGivesShearModulus) {
