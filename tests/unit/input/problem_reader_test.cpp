@@ -142,3 +142,60 @@ TEST(ProblemReader, LinearSolverOptionsAreValidated) {
 
 } // namespace
 } // namespace bipot
+
+namespace bipot {
+namespace {
+
+// Two regions side by side (x fastest): base | block; an interface between them.
+std::string with_interface(const std::string& interface_yaml, const std::string& extra = "") {
+  return "kinematics: plane_strain\n"
+         "mesh:\n  blocks:\n    cell: quad4\n"
+         "    x: {breaks: [0, 1, 2, 3], cells: [1, 1, 1]}\n"
+         "    y: {breaks: [0, 1], cells: [1]}\n"
+         "    regions: [left, middle, right]\n"
+         "materials:\n"
+         "  left: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
+         "  middle: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
+         "  right: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n" +
+         interface_yaml + extra +
+         "stages:\n  - name: s\n    boundary_conditions:\n"
+         "      - {set: bottom, component: y, value: 0}\n";
+}
+
+TEST(InterfaceInput, LawParametersOutOfRange) {
+  const auto p = problems_of(with_interface(
+      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: rccm\n"
+      "    parameters: {normal_stiffness: -1.0, tangential_stiffness: 1.0e6, "
+      "decohesion_energy: 0.0, friction_coefficient: -0.1, initial_adhesion: 1.5, "
+      "adhesion_viscosity: -1}\n"));
+  EXPECT_TRUE(has(p, "interfaces[0].parameters.normal_stiffness: value -1 is out of range (0, "
+                     "inf) kN/m^3"));
+  EXPECT_TRUE(has(p, "interfaces[0].parameters.decohesion_energy: value 0 is out of range"));
+  EXPECT_TRUE(has(p, "interfaces[0].parameters.friction_coefficient: value -0.1 is out of "
+                     "range [0, inf)"));
+  EXPECT_TRUE(has(p, "interfaces[0].parameters.initial_adhesion: value 1.5 is out of range [0, "
+                     "1]"));
+  EXPECT_TRUE(has(p, "interfaces[0].parameters.adhesion_viscosity: value -1 is out of range"));
+}
+
+TEST(InterfaceInput, UnknownLawAndSolverListRegisteredNames) {
+  const auto p = problems_of(
+      with_interface("interfaces:\n  - name: joint\n    between: [left, middle]\n    law: rcm\n"));
+  EXPECT_TRUE(has(p, "interfaces[0].law: unknown interface law 'rcm' (did you mean 'rccm'?); "
+                     "registered: coulomb_signorini, perfect_bonding, rccm"));
+  const auto q = problems_of(with_interface(
+      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: perfect_bonding\n",
+      "contact_solver: {type: uzawa}\n"));
+  EXPECT_TRUE(has(q, "contact_solver.type: unknown contact solver 'uzawa'; registered: "
+                     "bipotential_uzawa, semismooth_newton"));
+}
+
+TEST(InterfaceInput, RegionsThatDoNotTouch) {
+  const auto p = problems_of(with_interface(
+      "interfaces:\n  - name: joint\n    between: [left, right]\n    law: coulomb_signorini\n"));
+  EXPECT_TRUE(has(p, "interface 'joint': regions 'left' and 'right' do not touch"));
+  EXPECT_TRUE(has(p, "in.yaml:"));
+}
+
+} // namespace
+} // namespace bipot
