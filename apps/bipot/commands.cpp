@@ -1,5 +1,8 @@
 #include "apps/bipot/commands.hpp"
 
+#include "contact/laws/interface_law_registry.hpp"
+#include "contact/solver/contact_solver_options.hpp"
+
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -81,8 +84,9 @@ void print_usage() {
                "usage:\n"
                "  bipot run FILE.yaml        solve the problem, results in output.directory\n"
                "  bipot check FILE.yaml      validate the input and the mesh, solve nothing\n"
-               "  bipot describe [NAME]      parameters of a material, of linear_solver, or\n"
-               "                             'input' for the file's top-level keys\n"
+               "  bipot describe [NAME]      parameters of a material, an interface law, a\n"
+               "                             contact solver or linear_solver; 'input' for the\n"
+               "                             file's top-level keys\n"
                "  bipot COMMAND --help       help on a command\n\n"
                "Run in parallel with: mpiexec -n N bipot run FILE.yaml\n"
                "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure, 4 other error.\n";
@@ -168,6 +172,8 @@ int describe_command(const std::vector<std::string>& args) {
   }
   if (!root()) return 0;
   const auto& mats = materials();
+  const auto& laws = contact::interface_laws();
+  const auto& solvers = contact::contact_solvers();
   std::vector<std::string> names;
   bool markdown = false;
   for (const auto& a : args)
@@ -177,9 +183,11 @@ int describe_command(const std::vector<std::string>& args) {
       names.push_back(a);
   if (names.empty()) {
     std::cout << "materials: " << join_names(mats.names()) << "\n"
-              << "solvers: linear_solver\n"
+              << "interface laws: " << join_names(laws.names()) << "\n"
+              << "contact solvers: " << join_names(solvers.names()) << "\n"
+              << "linear solver: linear_solver\n"
               << "input file: input\n"
-              << "Use: bipot describe NAME\n";
+              << "Use: bipot describe NAME [--markdown]\n";
     return 0;
   }
   const std::string& name = names[0];
@@ -188,12 +196,18 @@ int describe_command(const std::vector<std::string>& args) {
   };
   if (mats.contains(name))
     print(mats.schema(name));
+  else if (laws.contains(name))
+    print(laws.schema(name));
+  else if (solvers.contains(name))
+    print(solvers.schema(name));
   else if (name == "linear_solver")
     print(LinearSolver::schema());
   else if (name == "input")
     std::cout << describe_input_format();
   else {
     std::vector<std::string> all = mats.names();
+    for (const auto& n : laws.names()) all.push_back(n);
+    for (const auto& n : solvers.names()) all.push_back(n);
     all.push_back("linear_solver");
     all.push_back("input");
     std::string msg = "bipot describe: nothing is called '" + name + "'";

@@ -44,8 +44,8 @@ const Registry<ContactSolverOptions>& contact_solvers() {
   static const Registry<ContactSolverOptions> registry = [] {
     Registry<ContactSolverOptions> r("contact solver");
     ParamSchema newton("semismooth_newton",
-                       "generalized Newton on equilibrium and the bipotential fixed point, "
-                       "multiplier updated every iteration (Alart-Curnier, condensed)");
+                       "semi-smooth Newton on equilibrium with the multipliers moved as soon "
+                       "as the residual dropped tenfold (inexact augmented Lagrangian)");
     // A larger rho makes the multiplier update contract faster (rate ~ k/(k+rho)) but makes
     // the stick/slip switches of the Newton steps harsher: on the sheared-block test factor
     // 10 converged in ~90 iterations per sliding increment, 100 did not converge.

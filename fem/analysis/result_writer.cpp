@@ -29,7 +29,13 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size)
   if (model.spec.output.vtk)
     vtk_ = std::make_unique<VtkSeriesWriter>(directory_, "solution", rank, size);
   if (rank == 0) {
-    for (const auto& iface : model.interfaces) {
+    for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
+      // Tied interfaces keep shared nodes and are not evaluated: their tractions would need
+      // the body-2 part of the internal forces, which is not computed yet, so they write
+      // nothing rather than zeros.
+      if (model.interface_laws[k]->is_tied()) continue;
+      const auto& iface = model.interfaces[k];
+      written_.push_back(k);
       // The interface mesh: one node per pair (at node a), the body-1 facets as cells.
       Mesh m;
       m.dim = model.mesh.dim;
@@ -98,7 +104,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
 void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis) {
   const int dim = spatial_dim(model_.kinematics);
   for (std::size_t k = 0; k < interface_csv_.size(); ++k) {
-    const auto& ia = *analysis.interfaces()[k];
+    const auto& ia = *analysis.interfaces()[written_[k]];
     std::vector<double> row = {static_cast<double>(report.stage_index + 1),
                                static_cast<double>(report.step), report.time, report.load_factor};
     const auto f = ia.resultant();

@@ -45,6 +45,7 @@ private:
   std::vector<Mesh> interface_meshes_;
   std::vector<std::unique_ptr<VtkSeriesWriter>> interface_vtk_;
   std::vector<std::unique_ptr<CsvWriter>> interface_csv_;
+  std::vector<std::size_t> written_; ///< model interface index of each written interface
 };
 
 } // namespace bipot
