@@ -206,8 +206,10 @@ int describe_command(const std::vector<std::string>& args) {
     std::cout << describe_input_format();
   else {
     std::vector<std::string> all = mats.names();
-    for (const auto& n : laws.names()) all.push_back(n);
-    for (const auto& n : solvers.names()) all.push_back(n);
+    for (const auto& n : laws.names())
+      all.push_back(n);
+    for (const auto& n : solvers.names())
+      all.push_back(n);
     all.push_back("linear_solver");
     all.push_back("input");
     std::string msg = "bipot describe: nothing is called '" + name + "'";

@@ -20,16 +20,6 @@ std::string prefix(const InterfaceDefinition& d) {
   return (d.where.empty() ? std::string() : d.where + ": ") + "interface '" + d.name + "': ";
 }
 
-std::string node_at(const Mesh& mesh, Index id) {
-  const auto& x = mesh.nodes[id];
-  char buf[96];
-  if (mesh.dim == 2)
-    std::snprintf(buf, sizeof buf, " (%.9g, %.9g)", x[0], x[1]);
-  else
-    std::snprintf(buf, sizeof buf, " (%.9g, %.9g, %.9g)", x[0], x[1], x[2]);
-  return "node " + std::to_string(id) + buf;
-}
-
 template <class Map> std::vector<std::string> keys_of(const Map& m) {
   std::vector<std::string> out;
   for (const auto& kv : m)
@@ -162,7 +152,7 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
   if (!common.empty()) {
     problems.push_back(p + "facet sets '" + sa + "' and '" + sb + "' share " +
                        std::to_string(common.size()) + " node(s), e.g. " +
-                       node_at(mesh, common[0]) +
+                       mesh.describe_node(common[0]) +
                        "; their nodes must be distinct (use between: [a, b] for regions of a "
                        "conforming mesh)");
     return iface;
@@ -192,7 +182,7 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
     const std::vector<Index>& lonely = on_a ? lonely_a : lonely_b;
     msg += "; first of '" + (on_a ? sa : sb) + "': ";
     for (std::size_t i = 0; i < std::min<std::size_t>(5, lonely.size()); ++i)
-      msg += (i ? ", " : "") + node_at(mesh, lonely[i]);
+      msg += (i ? ", " : "") + mesh.describe_node(lonely[i]);
     problems.push_back(msg);
     return iface;
   }
@@ -208,8 +198,8 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
     if (f.cell >= 0) continue;
     if (cells_of_node.empty()) cells_of_node = cells_of_nodes(mesh);
     if (!orient_orphan(mesh, cells_of_node, f)) {
-      problems.push_back(p + "a facet of set '" + sa + "' (corner " + node_at(mesh, f.nodes[0]) +
-                         ") is not a facet of any cell");
+      problems.push_back(p + "a facet of set '" + sa + "' (corner " +
+                         mesh.describe_node(f.nodes[0]) + ") is not a facet of any cell");
       break;
     }
   }

@@ -18,16 +18,6 @@ double norm(const std::array<double, 3>& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-std::string describe_node(const Mesh& mesh, Index id) {
-  const auto& x = mesh.nodes[id];
-  char buf[96];
-  if (mesh.dim == 2)
-    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g)", x[0], x[1]);
-  else
-    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g, %.9g)", x[0], x[1], x[2]);
-  return "node " + std::to_string(id) + buf;
-}
-
 } // namespace
 
 void compute_pair_geometry(const Mesh& mesh, Kinematics kin, Interface& iface,
@@ -72,14 +62,14 @@ void compute_pair_geometry(const Mesh& mesh, Kinematics kin, Interface& iface,
   for (std::size_t i = 0; i < n; ++i) {
     InterfacePair& p = iface.pairs[i];
     if (!touched[i])
-      throw InputError(context + describe_node(mesh, p.node_a) + " is on no interface facet");
+      throw InputError(context + mesh.describe_node(p.node_a) + " is on no interface facet");
     // Relative thresholds: the weighted sum is "zero" against the size of its terms, the plain
     // sum of unit vectors against 1.
     std::array<double, 3> m = weighted[i];
     if (!(norm(m) > 1e-10 * magnitude[i])) m = plain[i];
     const double len = norm(m);
     if (!(len > 1e-10))
-      throw InputError(context + "the normal is undefined at " + describe_node(mesh, p.node_a) +
+      throw InputError(context + "the normal is undefined at " + mesh.describe_node(p.node_a) +
                        ": the normals of its facets cancel");
     for (double& v : m)
       v /= len;

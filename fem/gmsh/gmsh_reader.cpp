@@ -190,20 +190,8 @@ std::vector<int> mirror_permutation(CellType type) {
   }
 }
 
-using CornerKey = std::array<Index, 4>;
-struct CornerKeyHash {
-  std::size_t operator()(const CornerKey& k) const {
-    std::size_t h = 0;
-    for (Index v : k)
-      h = h * 1000003u ^ std::hash<Index>()(v);
-    return h;
-  }
-};
-CornerKey corner_key(std::vector<Index> corners) {
-  CornerKey key{-1, -1, -1, -1};
-  std::sort(corners.begin(), corners.end());
-  std::copy(corners.begin(), corners.end(), key.begin());
-  return key;
+FacetKey corner_key(const std::vector<Index>& corners) {
+  return facet_key(corners.data(), static_cast<int>(corners.size()));
 }
 
 std::string group_name(const Group& g, int mesh_dim) {
@@ -295,7 +283,7 @@ Mesh build_mesh(const std::string& path, const std::vector<Group>& groups) {
   }
 
   // Facets of all cells by sorted corners, to orient the boundary elements.
-  std::unordered_map<CornerKey, std::vector<std::pair<Index, int>>, CornerKeyHash> facets;
+  std::unordered_map<FacetKey, std::vector<std::pair<Index, int>>, FacetKeyHash> facets;
   for (Index c = 0; c < mesh.num_cells(); ++c) {
     const auto local = cell_facets(mesh.cell_types[c]);
     const int nc = num_corners(facet_type(mesh.cell_types[c]));

@@ -101,19 +101,6 @@ int num_corners(CellType type) {
 
 namespace {
 
-/// Sorted corner nodes of a facet, padded: identifies a facet independently of the
-/// cell it is seen from.
-using FacetKey = std::array<Index, 4>;
-
-struct FacetKeyHash {
-  std::size_t operator()(const FacetKey& k) const {
-    std::size_t h = 0;
-    for (Index v : k)
-      h = h * 1000003u ^ std::hash<Index>()(v);
-    return h;
-  }
-};
-
 /// The (at most two) cells seen so far on one facet.
 struct FacetUse {
   Index cell[2] = {-1, -1};
@@ -123,13 +110,10 @@ struct FacetUse {
 using FacetMap = std::unordered_map<FacetKey, FacetUse, FacetKeyHash>;
 
 FacetKey facet_key(const Mesh& mesh, Index c, const std::vector<int>& local, int corners) {
-  // Padding with the largest index keeps it last when the whole key is sorted.
-  constexpr Index pad = std::numeric_limits<Index>::max();
-  FacetKey key{pad, pad, pad, pad};
+  Index ids[4];
   for (int i = 0; i < corners; ++i)
-    key[i] = mesh.cell(c)[local[i]];
-  std::sort(key.begin(), key.end());
-  return key;
+    ids[i] = mesh.cell(c)[local[i]];
+  return bipot::facet_key(ids, corners);
 }
 
 Facet make_facet(const Mesh& mesh, Index c, CellType type, const std::vector<int>& local) {
@@ -227,6 +211,15 @@ std::array<double, 3> facet_normal(const Mesh& mesh, const Facet& facet) {
   for (double& v : n)
     v /= len;
   return n;
+}
+
+FacetKey facet_key(const Index* corners, int count) {
+  // Padding with the largest index keeps it last when the whole key is sorted.
+  constexpr Index pad = std::numeric_limits<Index>::max();
+  FacetKey key{pad, pad, pad, pad};
+  std::copy(corners, corners + count, key.begin());
+  std::sort(key.begin(), key.end());
+  return key;
 }
 
 } // namespace bipot

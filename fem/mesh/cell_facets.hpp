@@ -11,6 +11,7 @@
 #include "fem/mesh/mesh.hpp"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace bipot {
@@ -41,5 +42,19 @@ std::vector<Facet> region_interface_facets(const Mesh& mesh, int region_a, int r
 /// 3D: normalised (x1 - x0) x (x2 - x0) for triangles, (x2 - x0) x (x3 - x1) for quads).
 /// Throws bipot::Error for Point1 facets or a degenerate (zero-length/area) facet.
 std::array<double, 3> facet_normal(const Mesh& mesh, const Facet& facet);
+
+/// Sorted corner node ids of a facet, padded: identifies a facet whichever cell it is seen
+/// from (hash-map key for facet matching).
+using FacetKey = std::array<Index, 4>;
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::size_t h = 0;
+    for (Index v : k)
+      h = h * 1000003u ^ std::hash<Index>()(v);
+    return h;
+  }
+};
+/// The key of up to four corner node ids given in any order.
+FacetKey facet_key(const Index* corners, int count);
 
 } // namespace bipot

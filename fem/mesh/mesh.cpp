@@ -3,6 +3,7 @@
 #include "fem/core/error.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace bipot {
 
@@ -39,6 +40,16 @@ std::vector<Index> Mesh::facet_set_nodes(const std::string& name) const {
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+std::string Mesh::describe_node(Index id) const {
+  const auto& x = nodes[id];
+  char buf[96];
+  if (dim == 2)
+    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g)", x[0], x[1]);
+  else
+    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g, %.9g)", x[0], x[1], x[2]);
+  return "node " + std::to_string(id) + buf;
 }
 
 void Mesh::check_consistency() const {

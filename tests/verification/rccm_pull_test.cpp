@@ -18,8 +18,8 @@ namespace {
 
 // Stiff bodies: with compliance c = L/E summed, the softening branch is stable under
 // displacement control when c < 1/(3 C) (no snap-back); here c 3C = 0.375.
-constexpr double C = 1.0e5, w = 0.02, E_col = 1.0e6, E_base = 2.0e6, L_col = 1.0,
-                 L_base = 0.5, width = 1.0;
+constexpr double C = 1.0e5, w = 0.02, E_col = 1.0e6, E_base = 2.0e6, L_col = 1.0, L_base = 0.5,
+                 width = 1.0;
 
 std::string pull_input(const std::string& solver) {
   return "kinematics: plane_strain\n"
@@ -89,7 +89,8 @@ TEST_P(RccmPull, FollowsTheClosedForm) {
   }
   // The pull reaches the softening branch and the peak is bounded by sqrt(w C).
   EXPECT_GT(softening, 3);
-  for (double s : h.sigma) EXPECT_LE(std::abs(s), std::sqrt(w * C) * (1 + 1e-12));
+  for (double s : h.sigma)
+    EXPECT_LE(std::abs(s), std::sqrt(w * C) * (1 + 1e-12));
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, RccmPull,

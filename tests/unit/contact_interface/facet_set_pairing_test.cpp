@@ -109,7 +109,7 @@ TEST(FacetSetPairing, MovedNodeIsReported) {
               "interface 'glue': facet sets 'a_right' and 'left_b' do not match within 2.24e-09 "
               "m: 1 of 4 nodes of 'a_right' and 1 of 4 nodes of 'left_b' have no coincident "
               "partner; first of 'a_right': node " +
-                  std::to_string(moved) + " (1.001, 0.333333333)");
+                  std::to_string(moved) + " at (1.001, 0.333333333)");
   }
   EXPECT_EQ(mesh.nodes, before.nodes);
 }
@@ -122,7 +122,7 @@ TEST(FacetSetPairing, SharedNodesAreRejected) {
   });
   EXPECT_NE(msg.find("facet sets 'top' and 'right' share 1 node(s), e.g. node "), std::string::npos)
       << msg;
-  EXPECT_NE(msg.find(" (2, 0); their nodes must be distinct"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(" at (2, 0); their nodes must be distinct"), std::string::npos) << msg;
 }
 
 TEST(CoincidentNodes, ManyNodesNearestWithinTolerance) {

@@ -163,11 +163,11 @@ std::string with_interface(const std::string& interface_yaml, const std::string&
 }
 
 TEST(InterfaceInput, LawParametersOutOfRange) {
-  const auto p = problems_of(with_interface(
-      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: rccm\n"
-      "    parameters: {normal_stiffness: -1.0, tangential_stiffness: 1.0e6, "
-      "decohesion_energy: 0.0, friction_coefficient: -0.1, initial_adhesion: 1.5, "
-      "adhesion_viscosity: -1}\n"));
+  const auto p = problems_of(
+      with_interface("interfaces:\n  - name: joint\n    between: [left, middle]\n    law: rccm\n"
+                     "    parameters: {normal_stiffness: -1.0, tangential_stiffness: 1.0e6, "
+                     "decohesion_energy: 0.0, friction_coefficient: -0.1, initial_adhesion: 1.5, "
+                     "adhesion_viscosity: -1}\n"));
   EXPECT_TRUE(has(p, "interfaces[0].parameters.normal_stiffness: value -1 is out of range (0, "
                      "inf) kN/m^3"));
   EXPECT_TRUE(has(p, "interfaces[0].parameters.decohesion_energy: value 0 is out of range"));
