@@ -293,7 +293,10 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs
       // between stick and slip (or open and closed) back and forth; damping breaks the cycle.
       t0 = std::chrono::steady_clock::now();
-      const Constraints fixed; // prescribed increments were applied on the first pass
+      // The merit is the free-DOF residual: constrained DOFs keep their (already applied)
+      // prescribed values, so their rows are eliminated as in the iteration itself.
+      Constraints fixed;
+      for (const auto& kv : target) fixed.set(kv.first, 0.0);
       std::vector<double> trial(u.size());
       double best = norm, best_step = 1.0;
       for (int k = 0; k < 8; ++k, step *= 0.5) {
