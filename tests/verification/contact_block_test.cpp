@@ -60,7 +60,8 @@ std::string solver(const std::string& type) {
 struct StageForces {
   std::vector<std::array<double, 3>> resultant; ///< interface force after each increment
   std::vector<int> sticking;                    ///< pairs in stick after each increment
-  std::vector<double> u;                        ///< final displacement
+  std::vector<double> cone_error; ///< max over slipping pairs of | |r_t| - mu_bar r_n | / r_n
+  std::vector<double> u;          ///< final displacement
 };
 
 StageForces run(const std::string& text) {
@@ -72,9 +73,16 @@ StageForces run(const std::string& text) {
     const auto& ia = *analysis.interfaces()[0];
     out.resultant.push_back(ia.resultant());
     int stick = 0;
-    for (const auto& r : ia.results())
+    double cone = 0;
+    for (const auto& r : ia.results()) {
       stick += r.status == contact::ContactStatus::Stick;
+      if (r.status == contact::ContactStatus::Slip)
+        cone = std::max(cone, std::abs(r.r.tail(r.r.size() - 1).norm() -
+                                       ia.law().friction_coefficient(r.beta) * r.r(0)) /
+                                  r.r(0));
+    }
     out.sticking.push_back(stick);
+    out.cone_error.push_back(cone);
   });
   out.u = analysis.displacement();
   return out;
@@ -150,6 +158,81 @@ TEST(ContactBlock, PerfectBondingEqualsNoInterface) {
   const auto b = run(block_input("", "", press));
   ASSERT_EQ(a.u.size(), b.u.size());
   EXPECT_LT(relative_difference(a.u, b.u), 1e-10);
+}
+
+TEST(ContactBlock, StiffStrongRccmApproachesPerfectBonding) {
+  const std::string press = "  - name: press\n    boundary_conditions:\n"
+                            "      - {set: bottom, component: x, value: 0}\n"
+                            "      - {set: bottom, component: y, value: 0}\n"
+                            "      - {set: top, component: x, value: 2.0e-3}\n"
+                            "      - {set: top, component: y, value: 1.0e-3}\n";
+  const auto bonded = run(block_input(
+      "interfaces:\n  - name: joint\n    between: [base, block]\n    law: perfect_bonding\n", "",
+      press));
+  // Interface springs C against the bulk's ~E/h: the jump, hence the difference from the
+  // bonded solution, scales as E/(C h). Two stiffnesses show the convergence.
+  std::vector<double> differences;
+  for (const char* c : {"1.0e8", "1.0e10"}) {
+    const std::string rccm = std::string("interfaces:\n  - name: joint\n    between: [base, "
+                                         "block]\n    law: rccm\n    parameters: "
+                                         "{normal_stiffness: ") +
+                             c + ", tangential_stiffness: " + c +
+                             ", decohesion_energy: 1.0e6, friction_coefficient: 0.3}\n";
+    const auto a = run(block_input(rccm, solver("semismooth_newton"), press));
+    // The split mesh has extra nodes at the end: compare the shared numbering only.
+    std::vector<double> u(a.u.begin(), a.u.begin() + bonded.u.size());
+    differences.push_back(relative_difference(u, bonded.u));
+  }
+  EXPECT_LT(differences[0], 1e-2);
+  EXPECT_LT(differences[1], 1e-4);
+  EXPECT_LT(differences[1], 0.02 * differences[0]); // ~100x stiffer, ~100x closer
+}
+
+TEST(ContactBlock3d, SlidesAtMuTimesNormalForce) {
+  // A hex8 block on a base, sheared diagonally in x and z: the slip is a 2-vector and the
+  // tangential force must lie on the full Coulomb cone, |F_t| = mu F_n.
+  const double mu = 0.4;
+  const std::string text =
+      "kinematics: three_d\n"
+      "mesh:\n  blocks:\n    cell: hex8\n"
+      "    x: {breaks: [0, 1.0], cells: [2]}\n"
+      "    y: {breaks: [-0.5, 0, 0.5], cells: [1, 2]}\n"
+      "    z: {breaks: [0, 1.0], cells: [2]}\n"
+      "    regions: [base, block]\n"
+      "materials:\n"
+      "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
+      "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+      "linear_solver: {method: direct}\n" +
+      coulomb(mu) + solver("semismooth_newton") +
+      "stages:\n"
+      "  - name: press\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: bottom, component: z, value: 0}\n"
+      "      - {set: top, component: x, value: 0}\n"
+      "      - {set: top, component: y, value: -1.0e-3}\n"
+      "      - {set: top, component: z, value: 0}\n"
+      "  - name: shear\n    increments: 3\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: bottom, component: z, value: 0}\n"
+      "      - {set: top, component: x, value: 3.0e-3}\n"
+      "      - {set: top, component: y, value: -1.0e-3}\n"
+      "      - {set: top, component: z, value: 4.0e-3}\n";
+  const auto res = run(text);
+  const auto& f = res.resultant.back();
+  const double tangential = std::hypot(f[0], f[2]);
+  EXPECT_GT(f[1], 0.0);
+  // Every pair slips and sits on the cone: |r_t| = mu r_n to the solver tolerance.
+  EXPECT_EQ(res.sticking.back(), 0);
+  EXPECT_LT(res.cone_error.back(), 1e-8);
+  // The pairs' slip directions differ slightly (elastic deformation of the block), so the
+  // resultant is a little inside the cone: |F_t| <= mu F_n, within a fraction of a percent.
+  EXPECT_LE(tangential, mu * f[1] * (1 + 1e-12));
+  EXPECT_GT(tangential, 0.999 * mu * f[1]);
+  // The friction force opposes the block's sliding direction (3, 4)/5 of the top.
+  EXPECT_NEAR(f[0] / tangential, -0.6, 0.05);
+  EXPECT_NEAR(f[2] / tangential, -0.8, 0.05);
 }
 
 } // namespace
