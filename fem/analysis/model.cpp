@@ -8,6 +8,7 @@
 #include "fem/mesh/structured_mesh.hpp"
 #include "materials/material_registry.hpp"
 #include <algorithm>
+#include <cmath>
 
 namespace bipot {
 
@@ -66,6 +67,36 @@ void split_interfaces(Model& model) {
                                                             model.spec.contact_solver.parameters);
 }
 
+// Node sets selected by boxes; the tolerance is relative to the mesh size so that nodes on a
+// box face are in. An empty set is an error (a typo in a coordinate, most likely).
+void add_box_sets(const MeshSpec& spec, Mesh& mesh, std::vector<std::string>& problems) {
+  if (spec.box_sets.empty()) return;
+  std::array<double, 3> lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
+  for (const auto& x : mesh.nodes)
+    for (int i = 0; i < 3; ++i)
+      lo[i] = std::min(lo[i], x[i]), hi[i] = std::max(hi[i], x[i]);
+  double diagonal = 0;
+  for (int i = 0; i < 3; ++i)
+    diagonal += (hi[i] - lo[i]) * (hi[i] - lo[i]);
+  const double tol = 1e-9 * std::sqrt(diagonal);
+  for (const auto& box : spec.box_sets) {
+    std::vector<Index> ids;
+    for (Index n = 0; n < mesh.num_nodes(); ++n) {
+      bool inside = true;
+      for (std::size_t i = 0; i < box.min.size(); ++i)
+        inside =
+            inside && mesh.nodes[n][i] >= box.min[i] - tol && mesh.nodes[n][i] <= box.max[i] + tol;
+      if (inside) ids.push_back(n);
+    }
+    if (ids.empty())
+      problems.push_back(box.where + ": no mesh node lies in this box");
+    else if (mesh.node_sets.count(box.name) || mesh.facet_sets.count(box.name))
+      problems.push_back(box.where + ": the mesh already has a set named '" + box.name + "'");
+    else
+      mesh.node_sets[box.name] = ids;
+  }
+}
+
 } // namespace
 
 Mesh build_mesh(const MeshSpec& spec, int dim) {
@@ -92,8 +123,9 @@ Model build_model(const ProblemSpec& spec) {
       problems.push_back(spec.mesh.where + ": " + p);
     throw InputError(problems);
   }
-  const Mesh& mesh = model.mesh;
   std::vector<std::string> problems;
+  add_box_sets(spec.mesh, model.mesh, problems);
+  const Mesh& mesh = model.mesh;
   if (mesh.dim != dim)
     problems.push_back(spec.mesh.where + ": the mesh is " + std::to_string(mesh.dim) +
                        "D but kinematics '" + spec.kinematics + "' needs " + std::to_string(dim) +

@@ -12,12 +12,20 @@
 
 namespace bipot {
 
+/// A node set made of the nodes inside a box (bounds inclusive, up to a small tolerance).
+struct BoxSetSpec {
+  std::string name;
+  std::vector<double> min, max; ///< one value per spatial component
+  std::string where;
+};
+
 struct MeshSpec {
   std::string file; ///< Gmsh .msh path, resolved against the input file's folder; or
   bool has_blocks = false;
   std::string cell = "quad4";
   AxisSegments x, y, z;
   std::vector<std::string> block_regions;
+  std::vector<BoxSetSpec> box_sets; ///< extra node sets: `sets: {name: {min, max}}`
   std::string where;
 };
 

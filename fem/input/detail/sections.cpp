@@ -52,12 +52,36 @@ int component_index(const std::string& name, int dim, bool axisymmetric) {
 
 MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
   MeshSpec mesh;
-  YamlMap m(top.node("mesh"), "mesh", top.diag(), {"file", "blocks"});
+  YamlMap m(top.node("mesh"), "mesh", top.diag(), {"file", "blocks", "sets"});
   mesh.where = top.where("mesh");
   if (!m.valid()) return mesh;
   if (m.has("file") == m.has("blocks")) {
     top.error("mesh", "give exactly one of 'file' (a Gmsh .msh) or 'blocks' (structured)");
     return mesh;
+  }
+  if (m.has("sets")) {
+    const YAML::Node sets = m.node("sets");
+    if (!sets.IsMap()) m.error("sets", "expected a map: name -> {min: [...], max: [...]}");
+    for (const auto& kv : sets.IsMap() ? sets : YAML::Node()) {
+      BoxSetSpec box;
+      box.name = kv.first.Scalar();
+      const std::string path = "mesh.sets." + box.name;
+      YamlMap b(kv.second, path, top.diag(), {"min", "max"});
+      if (!b.valid()) continue;
+      box.where = top.diag().where(kv.first, path);
+      b.reals("min", box.min, true);
+      b.reals("max", box.max, true);
+      for (const char* key : {"min", "max"}) {
+        const auto& v = std::string(key) == "min" ? box.min : box.max;
+        if (b.has(key) && static_cast<int>(v.size()) != dim)
+          b.error(key, "expected " + std::to_string(dim) + " coordinates");
+      }
+      bool ordered = true;
+      for (std::size_t i = 0; i < box.min.size() && i < box.max.size(); ++i)
+        ordered = ordered && box.min[i] <= box.max[i];
+      if (!ordered) b.error("max", "each max must be >= its min");
+      mesh.box_sets.push_back(box);
+    }
   }
   if (m.string("file", mesh.file) && m.has("file")) {
     mesh.where = m.where("file");

@@ -199,3 +199,33 @@ TEST(InterfaceInput, RegionsThatDoNotTouch) {
 
 } // namespace
 } // namespace bipot
+
+namespace bipot {
+namespace {
+
+TEST(BoxSets, SelectNodesInsideAndReportEmptyBoxes) {
+  const std::string text = replace(good, "    regions: [soil]\n",
+                                   "    regions: [soil]\n  sets:\n"
+                                   "    axis_top: {min: [0, 1], max: [0, 1]}\n"
+                                   "    mid_column: {min: [0.4, -1], max: [0.6, 2]}\n");
+  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  // 2 x 2 cells on [0, 1]^2: one node at (0, 1), three on x = 0.5.
+  ASSERT_EQ(model.mesh.node_sets.at("axis_top").size(), 1u);
+  const auto& x = model.mesh.nodes[model.mesh.node_sets.at("axis_top")[0]];
+  EXPECT_EQ(x[0], 0.0);
+  EXPECT_EQ(x[1], 1.0);
+  EXPECT_EQ(model.mesh.node_sets.at("mid_column").size(), 3u);
+  // A box holding no node is found once the mesh exists; a malformed one while reading.
+  const auto p = problems_of(replace(good, "    regions: [soil]\n",
+                                     "    regions: [soil]\n  sets:\n"
+                                     "    nowhere: {min: [5, 5], max: [6, 6]}\n"));
+  EXPECT_TRUE(has(p, "in.yaml:9:5: mesh.sets.nowhere: no mesh node lies in this box"));
+  const auto q = problems_of(replace(good, "    regions: [soil]\n",
+                                     "    regions: [soil]\n  sets:\n"
+                                     "    upside_down: {min: [1, 1], max: [0, 0]}\n"));
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_TRUE(has(q, "in.yaml:9:37: mesh.sets.upside_down.max: each max must be >= its min"));
+}
+
+} // namespace
+} // namespace bipot
