@@ -31,6 +31,12 @@ ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar) {
     out.r = tau;
     out.status = ContactStatus::Stick;
     out.dr_dtau = LocalMatrix::Identity(d, d);
+    // μ̄ = 0 (no friction, or full RCCM adhesion β = 1): the cone is the half-line r_t = 0
+    // and τ_t = 0 is a single point of it. Take the slip-side element of the generalized
+    // Jacobian there (no tangential part): the identity would give Newton a tangential
+    // stiffness ρ for one iteration and take it away at the next, and on a confined pile
+    // model that alternation stalled both solvers.
+    if (mu_bar == 0.0) out.dr_dtau.bottomRightCorner(d - 1, d - 1).setZero();
     return out;
   }
   if (mu_bar * s <= -tau_n) {
