@@ -296,7 +296,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       // The merit is the free-DOF residual: constrained DOFs keep their (already applied)
       // prescribed values, so their rows are eliminated as in the iteration itself.
       Constraints fixed;
-      for (const auto& kv : target) fixed.set(kv.first, 0.0);
+      for (const auto& kv : target)
+        fixed.set(kv.first, 0.0);
       std::vector<double> trial(u.size());
       double best = norm, best_step = 1.0;
       for (int k = 0; k < 8; ++k, step *= 0.5) {

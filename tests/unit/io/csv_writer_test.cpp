@@ -2,6 +2,8 @@
 
 #include "fem/core/error.hpp"
 
+#include "tests/support/scratch_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,21 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh directory per test, removed when the test ends.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("bipot_csv_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using Scratch = test::ScratchDir;
 
 std::vector<std::string> lines_of(const fs::path& p) {
   std::ifstream in(p);
@@ -53,7 +41,7 @@ std::vector<double> parse_row(const std::string& line) {
 }
 
 TEST(CsvWriter, RowsReadBackBitIdentical) {
-  const ScratchDir scratch;
+  const Scratch scratch("csv");
   const fs::path path = scratch.path / "history.csv";
   const std::vector<std::vector<double>> rows = {
       {0.1, 1.0 / 3.0, -2.5e17},
@@ -78,7 +66,7 @@ TEST(CsvWriter, RowsReadBackBitIdentical) {
 }
 
 TEST(CsvWriter, EachRowIsOnDiskBeforeTheWriterCloses) {
-  const ScratchDir scratch;
+  const Scratch scratch("csv");
   const fs::path path = scratch.path / "live.csv";
   CsvWriter w(path.string(), {"a", "b"});
   w.write_row({1.0, 2.0});
@@ -90,7 +78,7 @@ TEST(CsvWriter, EachRowIsOnDiskBeforeTheWriterCloses) {
 }
 
 TEST(CsvWriter, QuotesAwkwardColumnNames) {
-  const ScratchDir scratch;
+  const Scratch scratch("csv");
   const fs::path path = scratch.path / "names.csv";
   CsvWriter w(path.string(), {"u,x", "say \"hi\"", "plain"});
   EXPECT_EQ(lines_of(path)[0], "\"u,x\",\"say \"\"hi\"\"\",plain");
@@ -106,7 +94,7 @@ TEST(CsvWriter, ErrorsNameThePath) {
               std::string::npos)
         << e.what();
   }
-  const ScratchDir scratch;
+  const Scratch scratch("csv");
   const fs::path path = scratch.path / "short.csv";
   CsvWriter w(path.string(), {"a", "b", "c"});
   try {

@@ -15,6 +15,8 @@
 #include <vtkXMLPUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "tests/support/scratch_dir.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -28,21 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh directory per test, removed when the test ends.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("bipot_vtk_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using Scratch = test::ScratchDir;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -90,7 +78,7 @@ vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& p) {
 }
 
 TEST(VtkSeriesWriter, TwoStepsReadBackExactly) {
-  const ScratchDir scratch;
+  const Scratch scratch("vtk");
   const fs::path dir = scratch.path / "nested" / "out"; // parents are created too
   const Mesh m = make_rectangle(0.0, 2.0, 2, 0.0, 1.0, 1, CellType::Tri6);
   std::vector<Index> all(m.num_cells());
@@ -171,7 +159,7 @@ TEST(VtkSeriesWriter, TwoStepsReadBackExactly) {
 }
 
 TEST(VtkSeriesWriter, PvdListsEveryCompletedStep) {
-  const ScratchDir scratch;
+  const Scratch scratch("vtk");
   const fs::path dir = scratch.path;
   const Mesh m = make_rectangle(0.0, 1.0, 1, 0.0, 1.0, 1, CellType::Quad4);
   VtkSeriesWriter w(dir.string(), "run", 0, 1);
@@ -183,7 +171,7 @@ TEST(VtkSeriesWriter, PvdListsEveryCompletedStep) {
 }
 
 TEST(VtkSeriesWriter, ThreeDimensionalKeepsComponents) {
-  const ScratchDir scratch;
+  const Scratch scratch("vtk");
   const fs::path dir = scratch.path;
   const Mesh m = make_box(0, 1, 1, 0, 2, 1, 0, 3, 1, CellType::Hex8);
   VtkSeriesWriter w(dir.string(), "box", 0, 1);
@@ -206,7 +194,7 @@ TEST(VtkSeriesWriter, ThreeDimensionalKeepsComponents) {
 
 TEST(VtkSeriesWriter, TwoRanksWritePvtuReferencingBothPieces) {
   // Serial simulation of a 2-rank run: two writers, rank 1 first (as if it were faster).
-  const ScratchDir scratch;
+  const Scratch scratch("vtk");
   const fs::path dir = scratch.path;
   const Mesh m = make_rectangle(0.0, 3.0, 3, 0.0, 1.0, 2, CellType::Quad4);
   const std::vector<Index> cells[2] = {{0, 1, 2}, {3, 4, 5}}; // bottom row, top row
@@ -259,7 +247,7 @@ std::string error_of(const std::function<void()>& f) {
 }
 
 TEST(VtkSeriesWriter, BadArgumentsAreErrors) {
-  const ScratchDir scratch;
+  const Scratch scratch("vtk");
   const fs::path dir = scratch.path;
   const Mesh m = make_rectangle(0.0, 1.0, 1, 0.0, 1.0, 1, CellType::Quad4);
   VtkSeriesWriter w(dir.string(), "x", 0, 1);

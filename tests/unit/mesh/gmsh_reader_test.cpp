@@ -4,7 +4,9 @@
 #include "fem/mesh/cell_facets.hpp"
 #include "mesh_test_utils.hpp"
 
+#include "tests/support/scratch_dir.hpp"
 #include <gmsh.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,21 +23,7 @@ namespace fs = std::filesystem;
 const std::string kGeo = std::string(BIPOT_SOURCE_DIR) + "/inputs/meshes/square_with_regions.geo";
 const std::string kMsh = std::string(BIPOT_SOURCE_DIR) + "/inputs/meshes/square_with_regions.msh";
 
-/// A fresh directory per test, removed when the test ends.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("bipot_gmsh_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using Scratch = test::ScratchDir;
 
 /// Runs `build` in a Gmsh session of the test's own and writes the mesh to `out`.
 void gmsh_write(const std::function<void()>& build, const fs::path& out) {
@@ -164,7 +152,7 @@ TEST(GmshReader, ShippedFacetSetsOutwardAndInterfaceShared) {
 }
 
 TEST(GmshReader, SecondOrderIncompleteMesh) {
-  const ScratchDir scratch;
+  const Scratch scratch("gmsh");
   const fs::path out = scratch.path / "order2.msh";
   gmsh_write(
       [] {
@@ -196,7 +184,7 @@ TEST(GmshReader, SecondOrderIncompleteMesh) {
 }
 
 TEST(GmshReader, TetrahedralBox) {
-  const ScratchDir scratch;
+  const Scratch scratch("gmsh");
   const fs::path out = scratch.path / "box.msh";
   gmsh_write(
       [] {
@@ -244,7 +232,7 @@ TEST(GmshReader, TetrahedralBox) {
 }
 
 TEST(GmshReader, UnsupportedElementTypeNamesFileAndType) {
-  const ScratchDir scratch;
+  const Scratch scratch("gmsh");
   const fs::path out = scratch.path / "quad9.msh";
   gmsh_write(
       [] {
@@ -264,7 +252,7 @@ TEST(GmshReader, MissingFileAndOldFormat) {
   const std::string missing = "/nonexistent/dir/no_such_mesh.msh";
   EXPECT_EQ(input_error(missing),
             missing + ": cannot open the Gmsh mesh file (missing or unreadable)");
-  const ScratchDir scratch;
+  const Scratch scratch("gmsh");
   const fs::path old = scratch.path / "v22.msh";
   gmsh_write(
       [] {
