@@ -33,7 +33,8 @@ if [ ${#missing[@]} -gt 0 ]; then
     || { echo "setup: apt-get failed, see ${TMPDIR:-/tmp}/bipot-apt.log" >&2; exit 1; }
 fi
 
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" > "$build_dir.configure.log" 2>&1 \
-  || { cat "$build_dir.configure.log" >&2; exit 1; }
+mkdir -p "$build_dir"
+cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" > "$build_dir/configure.log" 2>&1 \
+  || { cat "$build_dir/configure.log" >&2; exit 1; }
 echo "setup: building in $build_dir with $jobs jobs"
 cmake --build "$build_dir" -j "$jobs"
