@@ -300,14 +300,20 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
         fixed.set(kv.first, 0.0);
       std::vector<double> trial(u.size());
       double best = norm, best_step = 1.0;
-      for (int k = 0; k < 8; ++k, step *= 0.5) {
+      bool accepted = false;
+      for (int k = 0; k < 8 && !accepted; ++k) {
         for (std::size_t i = 0; i < u.size(); ++i)
           trial[i] = u[i] + step * du_all[i];
         const double merit = residual_norm(trial, dtau, fixed);
-        if (merit < (1.0 - 1e-4 * step) * norm) break;
-        if (merit < best) best = merit, best_step = step;
-        if (k == 7) step = best < norm ? best_step : 1.0;
+        accepted = merit < (1.0 - 1e-4 * step) * norm;
+        if (!accepted) {
+          if (merit < best) best = merit, best_step = step;
+          step *= 0.5;
+        }
       }
+      // No sufficient decrease: take the best step tried, or the full one if none helped
+      // (at a kink the Newton direction need not be a descent direction).
+      if (!accepted) step = best < norm ? best_step : 1.0;
       summary.assembly_seconds += seconds_since(t0);
     }
     for (std::size_t i = 0; i < u.size(); ++i)
