@@ -6,12 +6,17 @@
 // - both contact solvers reach the same solution; RCCM with beta0 = 0 is Coulomb-Signorini;
 // - perfect bonding equals the same mesh without any interface.
 #include "fem/analysis/model.hpp"
+#include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "fem/linalg/communicator.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace bipot {
 namespace {
@@ -233,6 +238,41 @@ TEST(ContactBlock3d, SlidesAtMuTimesNormalForce) {
   // The friction force opposes the block's sliding direction (3, 4)/5 of the top.
   EXPECT_NEAR(f[0] / tangential, -0.6, 0.05);
   EXPECT_NEAR(f[2] / tangential, -0.8, 0.05);
+}
+
+TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
+  // The CSV written per interface carries the same resultant as the solver: at gross
+  // sliding |F_x| = mu F_y (1e-8, the CSV keeps 17 digits); the VTK series exists.
+  const double mu = 0.3;
+  std::string text = block_input(coulomb(mu), solver("semismooth_newton"), press_shear_lift);
+  const std::string dir = "contact_block_output";
+  if (mpi_rank() == 0) std::filesystem::remove_all(dir);
+  barrier();
+  text += "output: {directory: " + dir + "}\n";
+  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  ResultWriter writer(model, mpi_rank(), mpi_size());
+  StaticAnalysis analysis(model, {}, &writer);
+  analysis.run();
+  std::ifstream csv(dir + "/interface_joint.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "stage,step,time,load_factor,force_x,force_y");
+  std::vector<std::vector<double>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  ASSERT_EQ(rows.size(), 8u);
+  const auto& sliding = rows[5]; // last shear increment
+  EXPECT_NEAR(std::abs(sliding[4]), mu * sliding[5], 1e-8 * mu * sliding[5]);
+  EXPECT_EQ(rows[7][4], 0.0); // lifted: open
+  EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint.pvd"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint_0007_0.vtu"));
+  barrier(); // every rank has read before the next test may clean up
 }
 
 } // namespace
