@@ -83,4 +83,30 @@ std::vector<Index> match_coincident_nodes(const Mesh& mesh, const std::vector<In
   return partner;
 }
 
+std::vector<NormalPartner>
+match_nodes_along_normals(const Mesh& mesh, const std::vector<Index>& nodes_a,
+                          const std::vector<std::array<double, 3>>& normals,
+                          const std::vector<Index>& nodes_b, double tol) {
+  assert(tol > 0 && normals.size() == nodes_a.size());
+  std::vector<NormalPartner> out(nodes_a.size());
+  for (std::size_t i = 0; i < nodes_a.size(); ++i) {
+    const auto& xa = mesh.nodes[nodes_a[i]];
+    const auto& n = normals[i];
+    NormalPartner& best = out[i];
+    for (Index b : nodes_b) {
+      const auto& xb = mesh.nodes[b];
+      const std::array<double, 3> d{xb[0] - xa[0], xb[1] - xa[1], xb[2] - xa[2]};
+      const double s = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+      const std::array<double, 3> perp{d[0] - s * n[0], d[1] - s * n[1], d[2] - s * n[2]};
+      const double off = distance(perp, {0, 0, 0});
+      if (off <= tol) {
+        if (best.node < 0 || std::abs(s) < std::abs(best.gap)) best = {b, off, s};
+      } else if (best.node < 0 && off < best.off_line) {
+        best.off_line = off;
+      }
+    }
+  }
+  return out;
+}
+
 } // namespace bipot::contact

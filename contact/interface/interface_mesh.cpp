@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iterator>
+#include <map>
 #include <set>
 
 namespace bipot::contact {
@@ -136,8 +137,108 @@ bool orient_orphan(const Mesh& mesh, const std::vector<std::vector<Index>>& cell
   return false;
 }
 
-/// The facet-set mode: pairs the coincident nodes of two facet sets.
-Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
+/// Sets iface.facets_a from facet set a, giving facets without a cell the cell holding them
+/// (oriented outward of it). Returns false, with a problem recorded, for a facet of no cell.
+bool take_facets_a(const Mesh& mesh, const InterfaceDefinition& d, Interface& iface,
+                   std::vector<std::string>& problems) {
+  iface.facets_a = mesh.facet_sets.at(d.facet_set_a);
+  std::vector<std::vector<Index>> cells_of_node; // built on the first facet without a cell
+  for (Facet& f : iface.facets_a) {
+    if (f.cell >= 0) continue;
+    if (cells_of_node.empty()) cells_of_node = cells_of_nodes(mesh);
+    if (!orient_orphan(mesh, cells_of_node, f)) {
+      problems.push_back(prefix(d) + "a facet of set '" + d.facet_set_a + "' (corner " +
+                         mesh.describe_node(f.nodes[0]) + ") is not a facet of any cell");
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string format_length(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+/// "<count> of <total> <what>, first: <up to 5 nodes>".
+std::string node_list(const Mesh& mesh, const std::vector<Index>& nodes, std::size_t total,
+                      const std::string& what, const std::vector<std::string>& notes = {}) {
+  std::string msg =
+      std::to_string(nodes.size()) + " of " + std::to_string(total) + " " + what + ", first: ";
+  for (std::size_t i = 0; i < std::min<std::size_t>(5, nodes.size()); ++i)
+    msg += (i ? ", " : "") + mesh.describe_node(nodes[i]) + (i < notes.size() ? notes[i] : "");
+  return msg;
+}
+
+/// Pairing::Normal: pairs each node of set a with the node of set b on its normal line (the
+/// normals compute_pair_geometry() will give the pairs), with the distance as the pair's gap.
+void pair_along_normals(const Mesh& mesh, Kinematics kin, const InterfaceDefinition& d,
+                        const std::vector<Index>& nodes_a, const std::vector<Index>& nodes_b,
+                        Interface& iface, std::vector<std::string>& problems) {
+  const std::string p = prefix(d);
+  if (!take_facets_a(mesh, d, iface, problems)) return;
+  for (Index a : nodes_a) {
+    InterfacePair pair;
+    pair.node_a = a;
+    iface.pairs.push_back(pair);
+  }
+  compute_pair_geometry(mesh, kin, iface, p);
+  std::vector<std::array<double, 3>> normals;
+  for (const InterfacePair& pair : iface.pairs)
+    normals.push_back(pair.normal);
+  // Matching meshes put the partner on the line up to round-off; 1e-6 only forgives meshes
+  // written with a few significant digits.
+  const double diagonal = bounding_box_diagonal(mesh);
+  const double tol = 1e-6 * (diagonal > 0 ? diagonal : 1.0);
+  const auto partners = match_nodes_along_normals(mesh, nodes_a, normals, nodes_b, tol);
+
+  std::vector<Index> lonely_a, lonely_b, shared_b;
+  std::vector<std::string> misses;
+  std::map<Index, int> uses;
+  for (std::size_t i = 0; i < nodes_a.size(); ++i) {
+    if (partners[i].node >= 0) {
+      ++uses[partners[i].node];
+      continue;
+    }
+    lonely_a.push_back(nodes_a[i]);
+    misses.push_back(" (nearest node of '" + d.facet_set_b + "' " +
+                     format_length(partners[i].off_line) + " m off the line)");
+  }
+  for (Index b : nodes_b) {
+    const auto it = uses.find(b);
+    if (it == uses.end())
+      lonely_b.push_back(b);
+    else if (it->second > 1)
+      shared_b.push_back(b);
+  }
+  if (!lonely_a.empty() || !lonely_b.empty() || !shared_b.empty()) {
+    const std::string& sa = d.facet_set_a;
+    const std::string& sb = d.facet_set_b;
+    std::string msg = p + "facet sets '" + sa + "' and '" + sb +
+                      "' do not face each other node by node along the normals of '" + sa +
+                      "' (within " + format_length(tol) + " m of the line)";
+    if (!lonely_a.empty())
+      msg += "; " + node_list(mesh, lonely_a, nodes_a.size(),
+                              "nodes of '" + sa + "' have no node of '" + sb + "' on their normal",
+                              misses);
+    if (!lonely_b.empty())
+      msg += "; " + node_list(mesh, lonely_b, nodes_b.size(),
+                              "nodes of '" + sb + "' are no node's partner");
+    if (!shared_b.empty())
+      msg += "; " + node_list(mesh, shared_b, nodes_b.size(),
+                              "nodes of '" + sb + "' are the partner of several nodes");
+    problems.push_back(msg + "; the meshes must be designed so that the nodes face each other");
+    return;
+  }
+  for (std::size_t i = 0; i < nodes_a.size(); ++i) {
+    iface.pairs[i].node_b = partners[i].node;
+    iface.pairs[i].gap = partners[i].gap;
+  }
+}
+
+/// The facet-set mode: pairs the nodes of two facet sets, coincident or along the normals.
+Interface pair_facet_sets(const Mesh& mesh, Kinematics kin, const InterfaceDefinition& d,
                           std::vector<std::string>& problems) {
   const std::string p = prefix(d);
   const std::string& sa = d.facet_set_a;
@@ -157,6 +258,10 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
                        "conforming mesh)");
     return iface;
   }
+  if (d.pairing == Pairing::Normal) {
+    pair_along_normals(mesh, kin, d, nodes_a, nodes_b, iface, problems);
+    return iface;
+  }
   const double diagonal = bounding_box_diagonal(mesh);
   const double tol = 1e-9 * (diagonal > 0 ? diagonal : 1.0);
   const std::vector<Index> partner = match_coincident_nodes(mesh, nodes_a, nodes_b, tol);
@@ -171,10 +276,8 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
   for (Index b : nodes_b)
     if (!used.count(b)) lonely_b.push_back(b);
   if (!lonely_a.empty() || !lonely_b.empty()) {
-    char tol_text[32];
-    std::snprintf(tol_text, sizeof tol_text, "%.3g", tol);
     std::string msg = p + "facet sets '" + sa + "' and '" + sb + "' do not match within " +
-                      tol_text + " m: " + std::to_string(lonely_a.size()) + " of " +
+                      format_length(tol) + " m: " + std::to_string(lonely_a.size()) + " of " +
                       std::to_string(nodes_a.size()) + " nodes of '" + sa + "' and " +
                       std::to_string(lonely_b.size()) + " of " + std::to_string(nodes_b.size()) +
                       " nodes of '" + sb + "' have no coincident partner";
@@ -192,17 +295,7 @@ Interface pair_facet_sets(const Mesh& mesh, const InterfaceDefinition& d,
     pair.node_b = partner[i];
     iface.pairs.push_back(pair);
   }
-  iface.facets_a = mesh.facet_sets.at(sa);
-  std::vector<std::vector<Index>> cells_of_node; // built on the first facet without a cell
-  for (Facet& f : iface.facets_a) {
-    if (f.cell >= 0) continue;
-    if (cells_of_node.empty()) cells_of_node = cells_of_nodes(mesh);
-    if (!orient_orphan(mesh, cells_of_node, f)) {
-      problems.push_back(p + "a facet of set '" + sa + "' (corner " +
-                         mesh.describe_node(f.nodes[0]) + ") is not a facet of any cell");
-      break;
-    }
-  }
+  take_facets_a(mesh, d, iface, problems);
   return iface;
 }
 
@@ -238,7 +331,7 @@ std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
   }
   // Facet-set interfaces last, on the final node ids.
   for (std::size_t i = 0; i < defs.size(); ++i)
-    if (defs[i].region_a.empty()) out[i] = pair_facet_sets(work, defs[i], problems);
+    if (defs[i].region_a.empty()) out[i] = pair_facet_sets(work, kin, defs[i], problems);
   if (!problems.empty()) throw InputError(problems);
 
   for (std::size_t i = 0; i < defs.size(); ++i) {

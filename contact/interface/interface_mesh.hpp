@@ -14,9 +14,13 @@
 
 namespace bipot::contact {
 
-/// A matched pair of nodes, node_a on body 1 and node_b on body 2, at the same position.
+/// A matched pair of nodes, node_a on body 1 and node_b on body 2: at the same position, or
+/// (normal pairing) node_b on the line through node_a along `normal`, `gap` away.
 struct InterfacePair {
   Index node_a = -1, node_b = -1; ///< equal for a tied (not split) interface
+  /// m: (x_b − x_a)·n of the undeformed mesh, added to g_n with the interface's initial_gap;
+  /// 0 unless the facet sets were paired along the normals (> 0 for bodies apart).
+  double gap = 0;
   /// A_i = ∫_Γ N_i dΓ over the body-1 facets: m² in 3D and axisymmetry (2π r included), m per
   /// unit thickness in plane strain. May be 0 for a node on the axis in axisymmetry.
   double weight = 0;
@@ -51,9 +55,13 @@ struct Interface {
 /// bonding) nothing is split and every pair has node_a == node_b.
 ///
 /// Facet-set mode: each node of facet set a is paired with the node of facet set b at the
-/// same position (within 1e-9 × the mesh's bounding-box diagonal); the mesh is not changed and
-/// `tie_only` does not apply (the pairs' nodes are distinct; a tied law then joins them).
-/// Facets of set a without a cell are oriented outward of the cell holding them.
+/// same position (within 1e-9 × the mesh's bounding-box diagonal) or, with Pairing::Normal,
+/// with the node of b on the line through it along its normal n (see InterfacePair; within
+/// 1e-6 × the diagonal of that line; the nearest along the line if several), whose distance
+/// (x_b − x_a)·n becomes the pair's gap (< 0 for overlapping bodies). The mesh is not changed
+/// and `tie_only` does not apply (the pairs' nodes are distinct; a tied law then joins them).
+/// Either way the pairing must be one-to-one and cover both sets. Facets of set a without a
+/// cell are oriented outward of the cell holding them.
 ///
 /// Weights, normals and tangents: see InterfacePair. Straight Line2/Line3 facets (and planar
 /// Tri3/Quad4 faces) are integrated exactly; Line3 corner nodes get L/6, mid-nodes 2L/3.
@@ -62,8 +70,10 @@ struct Interface {
 /// for: both or neither mode given, an unknown region or facet set (listing the known ones and
 /// the nearest name), a region paired with itself, regions that do not touch, duplicate
 /// interface names, facet sets without coincident partners (listing up to 5 lonely nodes and
-/// the counts), or a node whose facets' normals cancel. Throws bipot::Error if the mesh's
-/// dimension does not match `kin`. On any exception `mesh` is left unchanged.
+/// the counts), nodes of set a with no node of b on their normal line or nodes of b that are
+/// no node's partner or two nodes' (the same way), or a node whose facets' normals cancel. Throws
+/// bipot::Error if the mesh's dimension does not match `kin`. On any exception `mesh` is left
+/// unchanged.
 std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
                                         const std::vector<InterfaceDefinition>& defs,
                                         bool tie_only);

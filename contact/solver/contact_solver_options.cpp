@@ -6,8 +6,8 @@ namespace {
 
 void common_keys(ParamSchema& s, double default_factor) {
   s.real("augmentation", "kN/m^3",
-         "augmentation parameter rho of the projection; 0 = automatic per pair (interface "
-         "stiffness of the law, or the local contact flexibility 1/W_ii)")
+         "augmentation parameter rho of the projection; 0 = automatic per pair: the larger of "
+         "the law's stiffness and the bodies' local stiffness 1/W_ii at the pair")
       .non_negative()
       .with_default(0.0);
   s.real("augmentation_factor", "", "multiplies the automatic rho")

@@ -2,8 +2,9 @@
 /// Node-to-node interface forces and tangents for one interface (formulation.md §1–5).
 ///
 /// For pair i with weight A_i and local frame Q_i = [n, t1 (, t2)] (columns), the local jump
-/// is ĝ = Q_iᵀ (u_b − u_a) + g0 n; the law's point-wise map gives the traction t (local) that
-/// body 1 (node a) exerts on body 2 (node b): nodal force A_i Q_i t on b and −A_i Q_i t on a.
+/// is ĝ = Q_iᵀ (u_b − u_a) + g0 n, g0 = the interface's initial gap + the pair's gap; the
+/// law's point-wise map gives the traction t (local) that body 1 (node a) exerts on body 2
+/// (node b): nodal force A_i Q_i t on b and −A_i Q_i t on a.
 /// The tangent uses ∂t/∂ĝ at fixed multiplier r̂ (the projection's generalized Jacobian and
 /// the implicit β update). Every rank evaluates every pair (interfaces are small next to the
 /// bulk) so all ranks hold the whole interface state; each rank assembles the pairs whose
@@ -76,6 +77,11 @@ public:
   /// Displacement reset keeping forces (geostatic stage): the current jumps become an
   /// offset, so that after the caller zeroes u the interface sees the same jumps.
   void absorb_displacements();
+  /// Extra normal offset (m) added to every pair's g_n on top of the initial gap: a stage
+  /// ramps it to prescribe an opening (> 0) or an interference (< 0), e.g. the radial
+  /// expansion of a pile shaft at installation. Kept through displacement resets.
+  void set_gap_shift(double shift) { gap_shift_ = shift; }
+  double gap_shift() const { return gap_shift_; }
 
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }
@@ -100,6 +106,7 @@ private:
   std::vector<Eigen::Vector3d> force_; ///< A_i Q_i t_i, global components (padded to 3)
   std::vector<LocalVector> offset_;    ///< jump kept through displacement resets
   double multiplier_change_ = 0;
+  double gap_shift_ = 0;
   bool tangent_changed_ = true;
 };
 

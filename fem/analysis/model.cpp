@@ -54,6 +54,7 @@ void split_interfaces(Model& model) {
       def.facet_set_b = spec.facet_sets[1];
     }
     def.initial_gap = spec.initial_gap;
+    if (spec.pairing == "normal") def.pairing = contact::Pairing::Normal;
     def.where = spec.where;
     is_tied.push_back(model.interface_laws.back()->is_tied());
     (is_tied.back() ? tied : split).push_back(def);
@@ -95,6 +96,27 @@ void add_box_sets(const MeshSpec& spec, Mesh& mesh, std::vector<std::string>& pr
     else
       mesh.node_sets[box.name] = ids;
   }
+}
+
+// Keeps in each region-restricted box set only the nodes of that region's cells. Runs after
+// the interface split, so that the set takes one side's copies of the interface nodes.
+void restrict_sets_to_regions(const MeshSpec& spec, Mesh& mesh) {
+  std::vector<std::string> problems;
+  for (const auto& box : spec.box_sets) {
+    if (box.region.empty()) continue;
+    const int region = mesh.regions.at(box.region);
+    std::vector<bool> in_region(mesh.num_nodes(), false);
+    for (Index c = 0; c < mesh.num_cells(); ++c)
+      if (mesh.cell_regions[c] == region)
+        for (int k = 0; k < mesh.cell_num_nodes(c); ++k)
+          in_region[mesh.cell(c)[k]] = true;
+    auto& ids = mesh.node_sets[box.name];
+    ids.erase(std::remove_if(ids.begin(), ids.end(), [&](Index n) { return !in_region[n]; }),
+              ids.end());
+    if (ids.empty())
+      problems.push_back(box.where + ": no node of region '" + box.region + "' lies in this box");
+  }
+  if (!problems.empty()) throw InputError(problems);
 }
 
 } // namespace
@@ -179,11 +201,29 @@ Model build_model(const ProblemSpec& spec) {
       if (ld.type != LoadSpec::Type::Gravity && !mesh.facet_sets.count(ld.set))
         problems.push_back(ld.where + ": " + unknown_set("facet set", ld.set, facet_names));
   }
+  for (const auto& box : spec.mesh.box_sets)
+    if (!box.region.empty() && !mesh.regions.count(box.region))
+      problems.push_back(box.where + ": " + unknown_set("region", box.region, region_names));
+  std::vector<std::string> interface_names;
+  for (const auto& iface : spec.interfaces)
+    interface_names.push_back(iface.name);
+  for (const auto& stage : spec.stages)
+    for (const auto& gap : stage.interface_gaps)
+      if (std::find(interface_names.begin(), interface_names.end(), gap.interface) ==
+          interface_names.end()) {
+        std::string msg = "no interface named '" + gap.interface + "'";
+        const auto near = nearest_name(gap.interface, interface_names);
+        if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+        problems.push_back(
+            gap.where + ": " + msg + "; declared: " +
+            (interface_names.empty() ? std::string("none") : join_names(interface_names)));
+      }
   for (const auto& s : spec.initial_stress)
     if (!mesh.regions.count(s.region))
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
   if (!problems.empty()) throw InputError(problems);
   split_interfaces(model);
+  restrict_sets_to_regions(spec.mesh, model.mesh);
   return model;
 }
 

@@ -14,6 +14,7 @@
 #include "fem/linalg/sparsity_pattern.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -77,6 +78,8 @@ struct StaticAnalysis::Impl {
 
   // Boundary-condition targets of the current stage and the values they start from.
   std::map<Index, double> target, start;
+  // Interface gap shifts (per interface) at the start and the end of the current stage.
+  std::vector<double> gap_start, gap_target;
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
@@ -190,8 +193,10 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);
   F_step.axpy(lambda, F_cur);
-  for (const auto& ia : interfaces)
-    ia->begin_increment();
+  for (std::size_t k = 0; k < interfaces.size(); ++k) {
+    interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
+    interfaces[k]->begin_increment();
+  }
 
   Constraints constraints;
   double reference = 0.0, baseline = -1.0;
@@ -235,6 +240,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     reference = std::max(reference, force_scale);
     log.history.push_back(norm / reference);
     log.contact = change / reference;
+
     const bool force_ok = !first_pass && norm <= tolerance * reference;
     const bool contact_ok = change <= tolerance * reference;
     if (force_ok && contact_ok) return true;
@@ -328,7 +334,11 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   summary.num_dofs = dofs.num_dofs();
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = 0.0;
-  std::vector<double> last_resultant(interfaces.size(), 0.0);
+  // Interface resultants (per interface and component) of the last step and the largest
+  // magnitudes seen, for the snap-back flag.
+  std::vector<std::array<double, 3>> last_resultant(interfaces.size(), {0, 0, 0});
+  std::vector<std::array<double, 3>> largest_resultant(interfaces.size(), {0, 0, 0});
+  double largest_any = 0.0;
 
   for (std::size_t s = 0; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
@@ -341,6 +351,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       start[d] = u[d];
     assemble_loads(stage, F_cur);
     matrix_ready = false; // the constrained set may have changed
+    // A gap shift not named by the stage keeps its value (it is a state, not a load).
+    gap_start.resize(interfaces.size());
+    gap_target.resize(interfaces.size());
+    for (std::size_t k = 0; k < interfaces.size(); ++k) {
+      gap_start[k] = gap_target[k] = interfaces[k]->gap_shift();
+      for (const auto& gap : stage.interface_gaps)
+        if (gap.interface == model.interfaces[k].name) gap_target[k] = gap.value;
+    }
 
     const double planned = 1.0 / stage.increments;
     double done = 0.0;
@@ -372,10 +390,19 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       for (const auto& ia : interfaces)
         ia->commit();
       auto t0 = std::chrono::steady_clock::now();
+      // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
+      // of a pile shaft) also carries the interface force of its pair.
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
       reaction.axpy(-1.0, F_step);
+      if (has_contact) {
+        R.set_zero();
+        for (const auto& ia : interfaces)
+          ia->add_to_system(Constraints{}, nullptr, R);
+        R.finish_assembly();
+        reaction.axpy(-1.0, R);
+      }
       reaction_all = reaction.gather_all();
       summary.assembly_seconds += seconds_since(t0);
 
@@ -393,11 +420,19 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.residual = log.history.empty() ? 0.0 : log.history.back();
       rep.cutbacks = level;
       rep.unstable = level > 0;
+      // Snap-back: a resultant component lost over 20% of the largest value it has had, and
+      // the loss is over 5% of the largest interface force of the model (so that a small
+      // interface unloading smoothly, like a pile toe, is not flagged).
       for (std::size_t k = 0; k < interfaces.size(); ++k) {
         const auto f = interfaces[k]->resultant();
-        const double magnitude = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-        if (magnitude < 0.8 * last_resultant[k]) rep.unstable = true; // snap-back
-        last_resultant[k] = magnitude;
+        for (int c = 0; c < 3; ++c) {
+          const double drop = std::abs(last_resultant[k][c]) - std::abs(f[c]);
+          if (drop > 0.2 * largest_resultant[k][c] && drop > 0.05 * largest_any)
+            rep.unstable = true;
+          largest_resultant[k][c] = std::max(largest_resultant[k][c], std::abs(f[c]));
+          largest_any = std::max(largest_any, largest_resultant[k][c]);
+        }
+        last_resultant[k] = f;
       }
       rep.seconds = seconds_since(step_start);
       t0 = std::chrono::steady_clock::now();

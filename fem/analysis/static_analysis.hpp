@@ -39,7 +39,9 @@ struct StepReport {
   double seconds = 0;    ///< wall time of the increment
   int cutbacks = 0;      ///< halvings needed before this increment converged
   int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)
-  bool unstable = false; ///< cut back, or an interface force dropped by over 20% (snap-back)
+  /// Cut back, or a snap-back: an interface resultant component lost over 20% of its largest
+  /// value (and over 5% of the largest interface force of the model) in one step.
+  bool unstable = false;
 };
 
 struct RunSummary {

@@ -16,6 +16,9 @@ namespace bipot {
 struct BoxSetSpec {
   std::string name;
   std::vector<double> min, max; ///< one value per spatial component
+  /// If not empty, only the nodes of this region's cells: after an interface split, the
+  /// copies on one side (e.g. the pile's shaft nodes, not the soil's).
+  std::string region;
   std::string where;
 };
 
@@ -63,6 +66,14 @@ struct LoadSpec {
   std::string where;
 };
 
+/// Extra normal offset of an interface's pairs reached at the end of a stage (ramped like a
+/// boundary condition): > 0 opens, < 0 prescribes an interference (installation of a pile).
+struct InterfaceGapSpec {
+  std::string interface;
+  double value = 0; ///< m
+  std::string where;
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -72,11 +83,12 @@ struct StageSpec {
   bool reset_displacements = false; ///< zero the displacements at the end, keep stresses
   std::vector<DirichletSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
+  std::vector<InterfaceGapSpec> interface_gaps;
   std::string where;
 };
 
 /// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
-/// mesh, or `facet_sets: [a, b]` with coincident nodes.
+/// mesh, or `facet_sets: [a, b]` with coincident nodes or nodes facing each other.
 struct InterfaceSpec {
   std::string name;
   std::vector<std::string> between;    ///< two region names, or empty
@@ -84,6 +96,9 @@ struct InterfaceSpec {
   std::string law;
   ParameterSet parameters; ///< validated against the law's schema
   double initial_gap = 0;  ///< m
+  /// facet_sets only: "coincident" (same positions) or "normal" (node of b on the normal line
+  /// of the node of a; their distance is the pair's initial gap)
+  std::string pairing = "coincident";
   std::string where;
 };
 

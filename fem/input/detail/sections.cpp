@@ -66,11 +66,12 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
       BoxSetSpec box;
       box.name = kv.first.Scalar();
       const std::string path = "mesh.sets." + box.name;
-      YamlMap b(kv.second, path, top.diag(), {"min", "max"});
+      YamlMap b(kv.second, path, top.diag(), {"min", "max", "region"});
       if (!b.valid()) continue;
       box.where = top.diag().where(kv.first, path);
       b.reals("min", box.min, true);
       b.reals("max", box.max, true);
+      b.string("region", box.region);
       for (const char* key : {"min", "max"}) {
         const auto& v = std::string(key) == "min" ? box.min : box.max;
         if (b.has(key) && static_cast<int>(v.size()) != dim)
@@ -264,9 +265,9 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     StageSpec st;
     const std::string path = index_path("stages", i);
-    YamlMap m(
-        list[i], path, top.diag(),
-        {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads"});
+    YamlMap m(list[i], path, top.diag(),
+              {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+               "loads", "interface_gaps"});
     if (!m.valid()) continue;
     st.where = top.diag().where(list[i], path);
     st.name = "stage" + std::to_string(i + 1);
@@ -328,6 +329,20 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
         st.loads.push_back(ld);
       }
     }
+    if (m.has("interface_gaps")) {
+      const YAML::Node gaps = m.node("interface_gaps");
+      if (!gaps.IsSequence()) m.error("interface_gaps", "expected a list");
+      for (std::size_t j = 0; gaps.IsSequence() && j < gaps.size(); ++j) {
+        InterfaceGapSpec gap;
+        YamlMap g(gaps[j], index_path(m.path("interface_gaps"), j), top.diag(),
+                  {"interface", "value"});
+        if (!g.valid()) continue;
+        gap.where = g.where("interface");
+        g.string("interface", gap.interface, true);
+        g.real("value", gap.value, true);
+        st.interface_gaps.push_back(gap);
+      }
+    }
     out.push_back(std::move(st));
   }
   return out;
@@ -345,7 +360,7 @@ std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
     InterfaceSpec spec;
     const std::string path = index_path("interfaces", i);
     YamlMap m(list[i], path, top.diag(),
-              {"name", "between", "facet_sets", "law", "parameters", "initial_gap"});
+              {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"});
     if (!m.valid()) continue;
     spec.where = top.diag().where(list[i], path);
     spec.name = "interface" + std::to_string(i + 1);
@@ -360,6 +375,13 @@ std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
     else if (m.has("facet_sets") && spec.facet_sets.size() != 2)
       m.error("facet_sets", "expected two facet set names [body 1 side, body 2 side]");
     m.real("initial_gap", spec.initial_gap);
+    if (m.string("pairing", spec.pairing) && m.has("pairing")) {
+      if (spec.pairing != "coincident" && spec.pairing != "normal")
+        m.error("pairing", "unknown pairing '" + spec.pairing + "'; expected coincident or normal");
+      else if (!m.has("facet_sets"))
+        m.error("pairing", "only facet_sets interfaces are paired this way (between: [a, b] "
+                           "splits a conforming mesh, whose nodes coincide)");
+    }
     if (m.string("law", spec.law, true) && m.has("law")) {
       if (!laws.contains(spec.law)) {
         m.error("law", laws.unknown_message(spec.law));

@@ -1,0 +1,203 @@
+// pile_pullout: the pull-out of a pile from soil (axisymmetric), the seed paper's application,
+// with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
+// problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
+#include "apps/pile_pullout/pile_input.hpp"
+#include "apps/pile_pullout/pile_problem.hpp"
+#include "apps/pile_pullout/pile_results.hpp"
+
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/result_writer.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/core/error.hpp"
+#include "fem/linalg/communicator.hpp"
+#include "fem/linalg/parallel_environment.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+using namespace bipot;
+
+void usage() {
+  std::cout
+      << "pile_pullout - pull-out of a pile from soil with an adhesive/frictional interface\n\n"
+         "usage:\n"
+         "  pile_pullout run FILE.yaml [--output DIR] [--quiet] [--no-plot]\n"
+         "        geostatic, installation and pull-out stages; writes DIR (default: the file's\n"
+         "        output.directory) with head_force.csv, profiles.csv, solution.pvd,\n"
+         "        interface_shaft.pvd, interface_toe.pvd and, with python3-matplotlib,\n"
+         "        pullout_curve.png and profiles.png\n"
+         "  pile_pullout check FILE.yaml     validate the file and build the model\n"
+         "  pile_pullout describe [--markdown]   the input file's keys\n\n"
+         "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
+         "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure (converged steps are\n"
+         "kept on disk), 4 other error.\n";
+}
+
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0.0;
+}
+
+int report(const std::exception& e, int code) {
+  if (mpi_rank() != 0) return code;
+  if (auto input = dynamic_cast<const InputError*>(&e)) {
+    std::cerr << "pile_pullout: invalid input (" << input->problems().size() << " problem"
+              << (input->problems().size() == 1 ? "" : "s") << "):\n";
+    for (const auto& p : input->problems())
+      std::cerr << "  " << p << "\n";
+  } else {
+    std::cerr << "pile_pullout: " << e.what() << "\n";
+  }
+  return code;
+}
+
+// Plots by the bundled matplotlib script; a missing Python or matplotlib costs the images,
+// not the run.
+void plot(const std::string& dir, const std::string& label) {
+  const std::string script = BIPOT_PILE_PLOT_SCRIPT;
+  if (!std::filesystem::exists(script)) {
+    std::cout << "pile_pullout: plot script not found (" << script << "), no images\n";
+    return;
+  }
+  const std::string q = "'";
+  // The script runs by its #! line: Debian's python3 (/usr/bin/python3) has matplotlib; a
+  // python3 earlier on PATH (pyenv, conda) may not.
+  const std::string curves = q + script + q + " curves " + q + dir + "/pullout_curve.png" + q +
+                             " " + q + label + "=" + dir + q;
+  const std::string profiles =
+      q + script + q + " profiles " + q + dir + "/profiles.png" + q + " " + q + dir + q;
+  for (const auto& cmd : {curves, profiles})
+    if (std::system((cmd + " > /dev/null").c_str()) != 0)
+      std::cout << "pile_pullout: plotting failed (needs Debian's python3-matplotlib): " << cmd
+                << "\n";
+}
+
+int run(const std::string& file, const std::string& output, bool quiet, bool plots) {
+  pile::PileSpec spec = pile::read_pile_file(file);
+  if (!output.empty()) spec.output.directory = output;
+  const Model model = build_model(pile::make_problem(spec));
+  const bool root = mpi_rank() == 0;
+  ResultWriter writer(model, mpi_rank(), mpi_size());
+  pile::PileResults results(model, writer.directory(), spec.profiles_at_mm, root);
+  StaticAnalysis analysis(model, {}, &writer);
+  if (root && !quiet)
+    std::printf("pile_pullout: %s: %s interface, %lld nodes, %lld cells, %lld DOFs, %d rank%s\n",
+                file.c_str(), spec.law.c_str(), static_cast<long long>(model.mesh.num_nodes()),
+                static_cast<long long>(model.mesh.num_cells()),
+                static_cast<long long>(analysis.dofs().num_dofs()), mpi_size(),
+                mpi_size() == 1 ? "" : "s");
+  RunSummary summary;
+  try {
+    summary = analysis.run([&](const StepReport& r) {
+      results.record(r, analysis);
+      if (!root || quiet) return;
+      const auto h = results.last();
+      std::printf("  %-12s step %3d/%-3d  head %8.3f mm  force %9.2f kN  newton %3d%s  "
+                  "%.2f s%s\n",
+                  r.stage.c_str(), r.step, r.steps, 1e3 * h.displacement, h.force, r.iterations,
+                  r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "", r.seconds,
+                  r.unstable ? "  (unstable)" : "");
+      std::fflush(stdout);
+    });
+  } catch (const SolverError&) {
+    if (root)
+      std::cerr << "pile_pullout: converged steps are in " << results.head_force_path() << "\n";
+    throw;
+  }
+  const double peak_mb = max_all(peak_memory_mb());
+  if (!root) return 0;
+  std::printf("pile_pullout: peak pull-out force %.2f kN at %.3f mm; final %.2f kN at %.3f mm\n",
+              results.peak_force(), 1e3 * results.peak_displacement(), results.last().force,
+              1e3 * results.last().displacement);
+  std::printf("pile_pullout: %d increments, %d linear solves, %d matrix set-ups; time %.2f s = "
+              "assembly %.2f + set-up %.2f + solve %.2f + output %.2f + other; peak memory "
+              "%.1f MB per rank\n",
+              summary.steps, summary.linear_solves, summary.matrix_setups, summary.seconds,
+              summary.assembly_seconds, summary.setup_seconds, summary.solve_seconds,
+              summary.output_seconds, peak_mb);
+  if (plots) plot(writer.directory(), spec.name);
+  std::cout << "pile_pullout: results in " << writer.directory() << " (head_force.csv, "
+            << "profiles.csv" << (plots ? ", pullout_curve.png, profiles.png" : "")
+            << "; ParaView: " << writer.pvd_path() << ")\n";
+  return 0;
+}
+
+template <class F> int guarded(F&& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    return report(e, 2);
+  } catch (const SolverError& e) {
+    return report(e, 3);
+  } catch (const std::exception& e) {
+    return report(e, 4);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  bipot::ParallelEnvironment env(argc, argv);
+  const bool root = env.rank() == 0;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) {
+    if (root) usage();
+    return 1;
+  }
+  std::string command = args[0], output;
+  bool quiet = false, plots = true, markdown = false;
+  std::vector<std::string> files;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h")
+      command = "--help";
+    else if (a == "--quiet" || a == "-q")
+      quiet = true;
+    else if (a == "--no-plot")
+      plots = false;
+    else if (a == "--markdown")
+      markdown = true;
+    else if (a == "--output" && i + 1 < args.size())
+      output = args[++i];
+    else if (!a.empty() && a[0] == '-') {
+      if (root) std::cerr << "pile_pullout: unknown option '" << a << "' (see --help)\n";
+      return 1;
+    } else
+      files.push_back(a);
+  }
+  if (command == "--help" || command == "-h" || command == "help") {
+    if (root) usage();
+    return 0;
+  }
+  if (command == "describe") {
+    if (root) std::cout << bipot::pile::describe_pile_input(markdown);
+    return 0;
+  }
+  if ((command != "run" && command != "check") || files.size() != 1) {
+    if (root) {
+      if (command != "run" && command != "check")
+        std::cerr << "pile_pullout: unknown command '" << command << "'\n";
+      else
+        std::cerr << "pile_pullout " << command << ": expected one input file\n";
+      usage();
+    }
+    return 1;
+  }
+  if (command == "check")
+    return guarded([&] {
+      const bipot::Model model =
+          bipot::build_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
+      if (root)
+        std::cout << files[0] << ": ok (" << model.mesh.num_nodes() << " nodes, "
+                  << model.mesh.num_cells() << " cells)\n";
+      return 0;
+    });
+  return guarded([&] { return run(files[0], output, quiet, plots); });
+}

@@ -1,0 +1,275 @@
+#include "apps/pile_pullout/pile_input.hpp"
+
+#include "contact/laws/interface_law_registry.hpp"
+#include "contact/solver/contact_solver_options.hpp"
+#include "fem/core/error.hpp"
+#include "fem/input/detail/sections.hpp"
+#include "fem/input/detail/yaml_map.hpp"
+#include "fem/linalg/linear_solver.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace bipot::pile {
+
+using input::Diagnostics;
+using input::YamlMap;
+
+ParamSchema geometry_schema() {
+  ParamSchema s("geometry", "pile and soil domain (axisymmetric, ground surface at z = 0)");
+  s.real("pile_diameter", "m", "pile diameter D").positive();
+  s.real("pile_length", "m", "embedded pile length L (head at the ground surface)").positive();
+  s.real("soil_radius", "m", "radius of the soil domain, from the pile axis").positive();
+  s.real("soil_depth", "m", "depth of the soil domain below the surface (> pile_length)")
+      .positive();
+  return s;
+}
+
+ParamSchema mesh_schema() {
+  ParamSchema s("mesh", "structured mesh of four blocks: pile, soil beside it, soil below the "
+                        "toe (r < D/2 and r > D/2)");
+  s.string("cell", "element type (the seed used 3-node triangles)")
+      .one_of({"tri3", "tri6", "quad4", "quad8"})
+      .with_default(std::string("tri3"));
+  s.integer("pile_radial_cells", "cells across the pile radius").at_least(1).with_default(3L);
+  s.integer("shaft_cells", "cells along the shaft").at_least(2).with_default(52L);
+  s.real("shaft_growth", "",
+         "size ratio of consecutive cells along the shaft going down "
+         "(< 1 refines toward the toe)")
+      .positive()
+      .with_default(1.0);
+  s.integer("soil_radial_cells", "cells from the shaft to soil_radius")
+      .at_least(1)
+      .with_default(30L);
+  s.real("radial_growth", "", "size ratio of consecutive soil cells going away from the shaft")
+      .positive()
+      .with_default(1.15);
+  s.integer("below_toe_cells", "cells from the toe to the bottom").at_least(1).with_default(20L);
+  s.real("below_toe_growth", "", "size ratio of consecutive cells going down from the toe")
+      .positive()
+      .with_default(1.15);
+  return s;
+}
+
+ParamSchema geostatic_schema() {
+  ParamSchema s("stages.geostatic", "initial stress sigma_v = gamma z, sigma_h = K0 sigma_v "
+                                    "(soil unit weight from materials.soil), then equilibrium "
+                                    "and a displacement reset keeping stresses and contact forces");
+  s.real("K0", "", "coefficient of earth pressure at rest (normally consolidated: 1 - sin phi')")
+      .non_negative();
+  return s;
+}
+
+ParamSchema installation_schema() {
+  ParamSchema s("stages.installation", "prescribed radial expansion of the shaft relative to the "
+                                       "soil (an interference), which raises the normal stress");
+  s.real("radial_displacement", "m", "radial displacement of the shaft into the soil")
+      .non_negative();
+  s.integer("increments", "load increments of the stage").at_least(1).with_default(4L);
+  return s;
+}
+
+ParamSchema pullout_schema() {
+  ParamSchema s("stages.pullout", "upward displacement of the pile head in equal increments");
+  s.real("head_displacement", "m", "head displacement reached at the end").positive();
+  s.integer("increments", "load increments of the stage").at_least(1);
+  s.real("duration", "s", "pseudo-time of the stage (matters for a viscous RCCM interface only)")
+      .positive()
+      .with_default(1.0);
+  return s;
+}
+
+namespace {
+
+const std::vector<std::string>& top_keys() {
+  static const std::vector<std::string> keys = {
+      "name",      "geometry",      "mesh",           "materials", "rigid_soil",
+      "interface", "linear_solver", "contact_solver", "stages",    "output"};
+  return keys;
+}
+
+ParameterSet read_section(const YamlMap& parent, const std::string& key, const ParamSchema& schema,
+                          bool required, const std::string& doc) {
+  ParameterSet p;
+  if (parent.has(key)) return input::read_parameters(parent, key, schema, {});
+  if (required)
+    parent.missing(key, doc);
+  else
+    validate(schema, p); // defaults
+  return p;
+}
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void check_geometry(const YamlMap& top, PileSpec& spec) {
+  // Each check needs both of its values valid (a missing or out-of-range one is reported
+  // already).
+  const auto& g = spec.geometry;
+  const auto ok = [&](const char* a, const char* b) { return g.has(a) && g.has(b); };
+  Diagnostics quiet(spec.file); // the keys were checked by read_section: no second report
+  YamlMap geo(top.node("geometry"), "geometry", quiet, geometry_schema().keys());
+  const auto error = [&](const char* key, const std::string& msg) {
+    top.diag().error_at(geo.where(key), msg);
+  };
+  const double radius = g.has("pile_diameter") ? 0.5 * g.real("pile_diameter") : 0.0;
+  if (ok("pile_diameter", "soil_radius") && !(g.real("soil_radius") > radius))
+    error("soil_radius", "the soil domain (radius " + num(g.real("soil_radius")) +
+                             " m) must extend beyond the pile radius (" + num(radius) + " m)");
+  if (ok("pile_length", "soil_depth") && !(g.real("soil_depth") > g.real("pile_length")))
+    error("soil_depth", "the soil domain (depth " + num(g.real("soil_depth")) +
+                            " m) must extend below the pile toe (pile_length " +
+                            num(g.real("pile_length")) + " m)");
+}
+
+void read_materials(const YamlMap& top, PileSpec& spec) {
+  if (!top.has("materials")) {
+    top.missing("materials", "pile: {...} and soil: {...}");
+    return;
+  }
+  const auto mats = input::read_materials(top);
+  bool have_pile = false, have_soil = false;
+  for (const auto& m : mats) {
+    if (m.region == "pile")
+      spec.pile = m, have_pile = true;
+    else if (m.region == "soil")
+      spec.soil = m, have_soil = true;
+    else
+      top.diag().error_at(m.where, "the pile model has two materials, 'pile' and 'soil'");
+  }
+  YamlMap m(top.node("materials"), "materials", top.diag(), {"pile", "soil"});
+  if (!have_pile && m.valid() && !m.has("pile")) m.missing("pile", "the pile's material");
+  if (!have_soil && m.valid() && !m.has("soil")) m.missing("soil", "the soil's material");
+}
+
+void read_interface(const YamlMap& top, PileSpec& spec) {
+  if (!top.has("interface")) {
+    top.missing("interface", "law: rccm | coulomb_signorini | perfect_bonding, and its "
+                             "parameters");
+    return;
+  }
+  YamlMap m(top.node("interface"), "interface", top.diag(), {"law", "parameters"});
+  if (!m.valid()) return;
+  spec.interface_where = top.where("interface");
+  if (!m.string("law", spec.law, true) || spec.law.empty()) return;
+  const auto& laws = contact::interface_laws();
+  if (!laws.contains(spec.law)) {
+    m.error("law", laws.unknown_message(spec.law));
+    return;
+  }
+  if (m.has("parameters"))
+    spec.law_parameters = input::read_parameters(m, "parameters", laws.schema(spec.law), {});
+  else {
+    const auto problems = validate(laws.schema(spec.law), spec.law_parameters);
+    for (const auto& p : problems)
+      m.error("parameters", p.key + ": " + p.message);
+  }
+}
+
+void read_stages(const YamlMap& top, PileSpec& spec) {
+  if (!top.has("stages")) {
+    top.missing("stages", "geostatic, installation and pullout");
+    return;
+  }
+  YamlMap m(top.node("stages"), "stages", top.diag(), {"geostatic", "installation", "pullout"});
+  if (!m.valid()) return;
+  spec.geostatic = read_section(m, "geostatic", geostatic_schema(), true, "K0");
+  spec.installation = read_section(m, "installation", installation_schema(), true,
+                                   "radial_displacement, increments");
+  spec.pullout =
+      read_section(m, "pullout", pullout_schema(), true, "head_displacement, increments");
+  spec.geostatic_where = m.where("geostatic");
+  spec.installation_where = m.where("installation");
+  spec.pullout_where = m.where("pullout");
+}
+
+void read_output(const YamlMap& top, PileSpec& spec) {
+  spec.output.directory = "results/pile_pullout";
+  if (!top.has("output")) return;
+  YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every", "profiles_at"});
+  if (!m.valid()) return;
+  m.string("directory", spec.output.directory);
+  m.boolean("vtk", spec.output.vtk);
+  if (m.integer("every", spec.output.every) && spec.output.every < 1)
+    m.error("every", "value " + std::to_string(spec.output.every) + " is out of range [1, inf)");
+  if (m.reals("profiles_at", spec.profiles_at_mm) && m.has("profiles_at")) {
+    if (!std::is_sorted(spec.profiles_at_mm.begin(), spec.profiles_at_mm.end()) ||
+        std::any_of(spec.profiles_at_mm.begin(), spec.profiles_at_mm.end(),
+                    [](double v) { return !(v > 0); }))
+      m.error("profiles_at", "expected increasing head displacements > 0 (mm)");
+  }
+}
+
+PileSpec parse(const std::string& text, const std::string& file_name) {
+  Diagnostics diag(file_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) throw InputError(file_name + ": the input file is empty");
+  PileSpec spec;
+  spec.file = file_name;
+  YamlMap top(root, "", diag, top_keys());
+  if (!top.valid()) throw InputError(diag.problems());
+  top.string("name", spec.name);
+  spec.geometry = read_section(top, "geometry", geometry_schema(), true,
+                               "pile_diameter, pile_length, soil_radius, soil_depth");
+  if (top.has("geometry")) check_geometry(top, spec);
+  spec.mesh = read_section(top, "mesh", mesh_schema(), false, "");
+  read_materials(top, spec);
+  top.boolean("rigid_soil", spec.rigid_soil);
+  read_interface(top, spec);
+  spec.linear_solver = read_section(top, "linear_solver", LinearSolver::schema(), false, "");
+  if (top.has("contact_solver"))
+    spec.contact_solver = input::read_contact_solver(top);
+  else
+    validate(contact::contact_solvers().schema(spec.contact_solver.type),
+             spec.contact_solver.parameters);
+  read_stages(top, spec);
+  read_output(top, spec);
+  if (spec.name.empty()) spec.name = spec.law;
+  if (!diag.problems().empty()) throw InputError(diag.problems());
+  return spec;
+}
+
+} // namespace
+
+PileSpec read_pile_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the input file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse(buffer.str(), path);
+}
+
+PileSpec read_pile_text(const std::string& text, const std::string& file_name) {
+  return parse(text, file_name);
+}
+
+std::string describe_pile_input(bool markdown) {
+  std::ostringstream os;
+  os << (markdown ? "" : "pile_pullout input file (YAML), top-level keys:\n");
+  if (!markdown)
+    os << "  name: label of the run in plots (default: the interface law)\n"
+          "  geometry, mesh: see below\n"
+          "  materials: {pile: {type: <material>, ...}, soil: {type: <material>, ...}}\n"
+          "  rigid_soil: true fixes every soil node (verification; default false)\n"
+          "  interface: {law: rccm | coulomb_signorini | perfect_bonding, parameters: {...}}\n"
+          "  linear_solver, contact_solver: as in bipot input files (bipot describe NAME)\n"
+          "  stages: {geostatic: {...}, installation: {...}, pullout: {...}}, see below\n"
+          "  output: {directory, vtk, every, profiles_at: [head displacements, mm]}\n\n";
+  for (const ParamSchema& s : {geometry_schema(), mesh_schema(), geostatic_schema(),
+                               installation_schema(), pullout_schema()})
+    os << (markdown ? "### `" + s.name() + "`\n\n" + s.doc() + "\n\n" + s.markdown_table() + "\n"
+                    : s.describe() + "\n");
+  return os.str();
+}
+
+} // namespace bipot::pile
