@@ -68,6 +68,7 @@ def save_atomically(fig, out):
     try:
         with os.fdopen(fd, "wb") as f:
             fig.savefig(f, format="png", dpi=150)
+        os.chmod(tmp, 0o644)  # mkstemp makes it private; a figure is for everyone to read
         os.replace(tmp, out)
     except BaseException as e:
         os.unlink(tmp)
