@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""Benchmark of the pile pull-out app (issue 4): the default RCCM run, and a refinement study.
+
+1. The default input (inputs/pile_pullout/rccm.yaml) as shipped: DOFs, increments, linear
+   solves, wall time, peak memory; medians over --repeat runs.
+2. Refinement study: the same model with every cell count multiplied by k (growth factors
+   taken to the power 1/k, so the grading is the same), pull-out in --study-increments
+   increments (fewer than the default, to keep the big meshes affordable; the same for all
+   k, so times compare), one run per k; then the exponent of total time vs DOFs between
+   successive sizes and overall (least squares on log-log).
+
+Usage: bench/pile.py [--app build/apps/pile_pullout/pile_pullout] [--repeat 3]
+                     [--factors 1,2,4,8] [--study-increments 8] [--skip-default]
+Prints a Markdown table for docs/performance.md.
+"""
+import argparse
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEFAULT = os.path.join(ROOT, "inputs", "pile_pullout", "rccm.yaml")
+
+
+def run(app, path, workdir):
+    out = subprocess.run([app, "run", path, "--no-plot", "--output", "results"],
+                         cwd=workdir, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"{path}: exit {out.returncode}\n{out.stdout}\n{out.stderr}")
+    text = out.stdout
+    m = re.search(r"(\d+) DOFs", text)
+    s = re.search(r"(\d+) increments, (\d+) linear solves, (\d+) matrix set-ups; time ([\d.]+) s"
+                  r" = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+).*peak memory "
+                  r"([\d.]+) MB", text)
+    peak = re.search(r"peak pull-out force ([\d.]+) kN at ([\d.]+) mm", text)
+    return {"dofs": int(m.group(1)) if m else 0, "increments": int(s.group(1)),
+            "solves": int(s.group(2)), "setups": int(s.group(3)), "seconds": float(s.group(4)),
+            "assembly": float(s.group(5)), "setup": float(s.group(6)),
+            "solve": float(s.group(7)), "memory": float(s.group(8)),
+            "peak": float(peak.group(1))}
+
+
+def scaled(text, k, increments):
+    def mul(key, v):
+        return f"{key}: {int(v) * k}"
+    for key in ("pile_radial_cells", "shaft_cells", "soil_radial_cells", "below_toe_cells"):
+        text = re.sub(rf"{key}: (\d+)", lambda m: mul(key, m.group(1)), text)
+    for key in ("radial_growth", "below_toe_growth"):
+        text = re.sub(rf"{key}: ([\d.]+)",
+                      lambda m: f"{key}: {float(m.group(1)) ** (1.0 / k):.6f}", text)
+    text = re.sub(r"pullout: \{head_displacement: ([\d.e-]+), increments: \d+\}",
+                  lambda m: f"pullout: {{head_displacement: {m.group(1)}, increments: "
+                            f"{increments}}}", text)
+    return text.replace("every: 5", "every: 1000").replace("vtk: true", "vtk: false")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--app", default=os.path.join(ROOT, "build", "apps", "pile_pullout",
+                                                 "pile_pullout"))
+    p.add_argument("--repeat", type=int, default=3)
+    p.add_argument("--factors", default="1,2,4,8")
+    p.add_argument("--study-increments", type=int, default=8)
+    p.add_argument("--skip-default", action="store_true")
+    a = p.parse_args()
+    work = tempfile.mkdtemp(prefix="bipot_bench_pile_")
+    if not a.skip_default:
+        runs = [run(a.app, DEFAULT, work) for _ in range(a.repeat)]
+        med = {k: statistics.median(r[k] for r in runs) for k in runs[0]}
+        print("| default RCCM run | DOFs | increments | linear solves | set-ups | wall time "
+              "(median) | assembly | set-up | solve | peak memory |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
+        print(f"| rccm.yaml | {med['dofs']} | {med['increments']:.0f} | {med['solves']:.0f} | "
+              f"{med['setups']:.0f} | {med['seconds']:.1f} s | {med['assembly']:.1f} s | "
+              f"{med['setup']:.1f} s | {med['solve']:.1f} s | {med['memory']:.0f} MB |")
+        times = ", ".join("%.1f" % r["seconds"] for r in runs)
+        print(f"(times of the {a.repeat} runs: {times} s)\n", flush=True)
+    text = open(DEFAULT).read()
+    rows = []
+    print("| k | DOFs | increments | linear solves | wall time | set-up | solve | memory | "
+          "peak force | exponent vs previous |")
+    print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
+    for k in [int(x) for x in a.factors.split(",")]:
+        path = os.path.join(work, f"pile_k{k}.yaml")
+        with open(path, "w") as f:
+            f.write(scaled(text, k, a.study_increments))
+        r = run(a.app, path, work)
+        expo = ""
+        if rows:
+            q = rows[-1]
+            expo = f"{math.log(r['seconds'] / q['seconds']) / math.log(r['dofs'] / q['dofs']):.2f}"
+        rows.append(r)
+        print(f"| {k} | {r['dofs']} | {r['increments']} | {r['solves']} | {r['seconds']:.1f} s | "
+              f"{r['setup']:.1f} s | {r['solve']:.1f} s | {r['memory']:.0f} MB | "
+              f"{r['peak']:.1f} kN | {expo} |", flush=True)
+    if len(rows) > 1:
+        xs = [math.log(r["dofs"]) for r in rows]
+        ys = [math.log(r["seconds"]) for r in rows]
+        mx, my = statistics.mean(xs), statistics.mean(ys)
+        slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+        print(f"\ntotal time ~ N^{slope:.2f} (least squares over k = {a.factors})")
+
+
+if __name__ == "__main__":
+    main()
