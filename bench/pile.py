@@ -67,6 +67,7 @@ def main():
     p.add_argument("--study-increments", type=int, default=8)
     p.add_argument("--skip-default", action="store_true")
     a = p.parse_args()
+    a.app = os.path.abspath(a.app)  # the runs happen in a scratch folder
     work = tempfile.mkdtemp(prefix="bipot_bench_pile_")
     if not a.skip_default:
         runs = [run(a.app, DEFAULT, work) for _ in range(a.repeat)]

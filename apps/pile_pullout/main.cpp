@@ -123,8 +123,12 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
               summary.assembly_seconds, summary.setup_seconds, summary.solve_seconds,
               summary.output_seconds, peak_mb);
   if (plots) plot(writer.directory(), spec.name);
-  std::cout << "pile_pullout: results in " << writer.directory() << " (head_force.csv, "
-            << "profiles.csv" << (plots ? ", pullout_curve.png, profiles.png" : "")
+  // List what is there: a bonded shaft has no profiles to plot.
+  std::string files = "head_force.csv, profiles.csv";
+  for (const char* png : {"pullout_curve.png", "profiles.png"})
+    if (plots && std::filesystem::exists(writer.directory() + "/" + png))
+      files += std::string(", ") + png;
+  std::cout << "pile_pullout: results in " << writer.directory() << " (" << files
             << "; ParaView: " << writer.pvd_path() << ")\n";
   return 0;
 }
