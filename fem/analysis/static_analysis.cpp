@@ -259,6 +259,9 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       for (const auto& ia : interfaces)
         ia->update_multipliers();
       ++log.uzawa_updates;
+      // K was rebuilt but not factorised: the solver still holds the previous matrix, so
+      // it must be set up again even if the next tangent equals the one last factorised.
+      if (need_matrix) matrix_ready = false;
       inner = -1;
       baseline = -1; // the next residual, for the new multipliers, is the new baseline
       continue;
