@@ -1,4 +1,5 @@
 #include "apps/bipot/commands.hpp"
+#include "apps/common/app_support.hpp"
 
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
@@ -25,45 +26,14 @@ bool root() {
   return mpi_rank() == 0;
 }
 
-// Peak resident memory of this process (VmHWM), MB; 0 where /proc is not available.
-double peak_memory_mb() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0.0;
-}
-
 bool wants_help(const std::vector<std::string>& args) {
   for (const auto& a : args)
     if (a == "--help" || a == "-h") return true;
   return false;
 }
 
-// Every rank validates (so every rank fails the same way before any collective call);
-// rank 0 prints.
-int report(const std::exception& e, int code) {
-  if (!root()) return code;
-  if (auto input = dynamic_cast<const InputError*>(&e)) {
-    std::cerr << "bipot: invalid input (" << input->problems().size() << " problem"
-              << (input->problems().size() == 1 ? "" : "s") << "):\n";
-    for (const auto& p : input->problems())
-      std::cerr << "  " << p << "\n";
-  } else {
-    std::cerr << "bipot: " << e.what() << "\n";
-  }
-  return code;
-}
-
 template <class F> int guarded(F&& body) {
-  try {
-    return body();
-  } catch (const InputError& e) {
-    return report(e, 2);
-  } catch (const SolverError& e) {
-    return report(e, 3);
-  } catch (const std::exception& e) {
-    return report(e, 4);
-  }
+  return run_guarded("bipot", std::forward<F>(body));
 }
 
 std::string one_file(const std::vector<std::string>& args, const char* usage) {

@@ -1,6 +1,7 @@
 // pile_pullout: the pull-out of a pile from soil (axisymmetric), the seed paper's application,
 // with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
 // problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
+#include "apps/common/app_support.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -36,26 +37,6 @@ void usage() {
          "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
          "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure (converged steps are\n"
          "kept on disk), 4 other error.\n";
-}
-
-double peak_memory_mb() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0.0;
-}
-
-int report(const std::exception& e, int code) {
-  if (mpi_rank() != 0) return code;
-  if (auto input = dynamic_cast<const InputError*>(&e)) {
-    std::cerr << "pile_pullout: invalid input (" << input->problems().size() << " problem"
-              << (input->problems().size() == 1 ? "" : "s") << "):\n";
-    for (const auto& p : input->problems())
-      std::cerr << "  " << p << "\n";
-  } else {
-    std::cerr << "pile_pullout: " << e.what() << "\n";
-  }
-  return code;
 }
 
 // Plots by the bundled matplotlib script; a missing Python or matplotlib costs the images,
@@ -111,7 +92,7 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
       std::cerr << "pile_pullout: converged steps are in " << results.head_force_path() << "\n";
     throw;
   }
-  const double peak_mb = max_all(peak_memory_mb());
+  const double peak_mb = max_all(app::peak_memory_mb());
   if (!root) return 0;
   std::printf("pile_pullout: peak pull-out force %.2f kN at %.3f mm; final %.2f kN at %.3f mm\n",
               results.peak_force(), 1e3 * results.peak_displacement(), results.last().force,
@@ -134,15 +115,7 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
 }
 
 template <class F> int guarded(F&& body) {
-  try {
-    return body();
-  } catch (const InputError& e) {
-    return report(e, 2);
-  } catch (const SolverError& e) {
-    return report(e, 3);
-  } catch (const std::exception& e) {
-    return report(e, 4);
-  }
+  return app::run_guarded("pile_pullout", std::forward<F>(body));
 }
 
 } // namespace

@@ -206,14 +206,7 @@ void read_output(const YamlMap& top, PileSpec& spec) {
 
 PileSpec parse(const std::string& text, const std::string& file_name) {
   Diagnostics diag(file_name);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (root.IsNull()) throw InputError(file_name + ": the input file is empty");
+  const YAML::Node root = input::load_yaml(text, file_name);
   PileSpec spec;
   spec.file = file_name;
   YamlMap top(root, "", diag, top_keys());
@@ -242,11 +235,7 @@ PileSpec parse(const std::string& text, const std::string& file_name) {
 } // namespace
 
 PileSpec read_pile_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the input file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse(buffer.str(), path);
+  return parse(input::read_text_file(path), path);
 }
 
 PileSpec read_pile_text(const std::string& text, const std::string& file_name) {

@@ -86,14 +86,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
 ProblemSpec parse(const std::string& text, const std::string& file_name,
                   const std::string& base_dir) {
   Diagnostics diag(file_name);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (root.IsNull()) throw InputError(file_name + ": the input file is empty");
+  const YAML::Node root = input::load_yaml(text, file_name);
   ProblemSpec spec = read_root(root, diag, base_dir);
   if (!diag.problems().empty()) throw InputError(diag.problems());
   return spec;
@@ -102,12 +95,8 @@ ProblemSpec parse(const std::string& text, const std::string& file_name,
 } // namespace
 
 ProblemSpec read_problem_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the input file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
   const auto dir = std::filesystem::path(path).parent_path().string();
-  return parse(buffer.str(), path, dir);
+  return parse(input::read_text_file(path), path, dir);
 }
 
 ProblemSpec read_problem_text(const std::string& text, const std::string& file_name) {

@@ -1,9 +1,12 @@
 #include "fem/input/detail/yaml_map.hpp"
 
+#include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace bipot::input {
 
@@ -28,6 +31,26 @@ std::string join_path(const std::string& parent, const std::string& key) {
 }
 std::string index_path(const std::string& parent, std::size_t i) {
   return parent + "[" + std::to_string(i) + "]";
+}
+
+YAML::Node load_yaml(const std::string& text, const std::string& file_name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file_name + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (root.IsNull()) throw InputError(file_name + ": the input file is empty");
+  return root;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the input file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
 }
 
 bool decode_real(const YAML::Node& n, double& out) {

@@ -67,6 +67,12 @@ private:
   bool valid_ = false;
 };
 
+/// Parses YAML text; throws InputError "file:line:col: YAML syntax error: ..." or
+/// "file: the input file is empty".
+YAML::Node load_yaml(const std::string& text, const std::string& file_name);
+/// The whole content of a file; throws InputError "path: cannot open the input file".
+std::string read_text_file(const std::string& path);
+
 /// Decodes a scalar as a double / long / bool; false if it is not one.
 bool decode_real(const YAML::Node& n, double& out);
 bool decode_integer(const YAML::Node& n, long& out);
