@@ -84,7 +84,7 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
                   "%.2f s%s\n",
                   r.stage.c_str(), r.step, r.steps, 1e3 * h.displacement, h.force, r.iterations,
                   r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "", r.seconds,
-                  r.unstable ? "  (unstable)" : "");
+                  r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
       std::fflush(stdout);
     });
   } catch (const SolverError&) {

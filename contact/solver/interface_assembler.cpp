@@ -26,7 +26,7 @@ Eigen::Matrix3d frame(const InterfacePair& p, int dim) {
 
 InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLaw& law,
                                        const DofMap& dofs, const DofDistribution& dist)
-    : iface_(iface), law_(law), dofs_(dofs), dim_(dofs.dofs_per_node()) {
+    : iface_(iface), law_(law), dofs_(dofs), dim_(dofs.dofs_per_node()), frozen_law_(law) {
   const std::size_t n = iface_.pairs.size();
   owned_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -115,8 +115,11 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     const InterfacePair& p = iface_.pairs[i];
     const LocalVector jump = local_jump(i, u);
+    InterfaceState old = committed_[i];
+    if (frozen_) old.beta = frozen_beta_[i];
     const InterfaceResponse resp =
-        contact::evaluate(law_, committed_[i], jump, multiplier_[i], dtau, rho_[i], &d);
+        frozen_ ? contact::evaluate(frozen_law_, old, jump, multiplier_[i], dtau, rho_[i], &d)
+                : contact::evaluate(law_, old, jump, multiplier_[i], dtau, rho_[i], &d);
     PairResult& res = results_[i];
     res.beta = resp.beta;
     res.jump = jump;
@@ -183,6 +186,29 @@ void InterfaceAssembler::commit() {
     committed_[i].r = results_[i].r;
     multiplier_[i] = results_[i].r;
   }
+}
+
+void InterfaceAssembler::freeze_adhesion(const std::vector<double>& beta) {
+  if (beta.size() != committed_.size())
+    throw Error("interface '" + iface_.name + "': freeze_adhesion needs one beta per pair");
+  frozen_beta_ = beta;
+  frozen_ = true;
+}
+
+std::vector<double> InterfaceAssembler::committed_adhesion() const {
+  std::vector<double> beta(committed_.size());
+  for (std::size_t i = 0; i < committed_.size(); ++i)
+    beta[i] = committed_[i].beta;
+  return beta;
+}
+
+std::vector<double> InterfaceAssembler::adhesion_at(const std::vector<double>& u,
+                                                    double dtau) const {
+  std::vector<double> beta(committed_.size());
+  for (std::size_t i = 0; i < committed_.size(); ++i)
+    beta[i] = tied() ? committed_[i].beta
+                     : law_.update_adhesion(committed_[i].beta, local_jump(i, u), dtau);
+  return beta;
 }
 
 std::array<double, 3> InterfaceAssembler::resultant() const {

@@ -11,6 +11,7 @@
 /// node a it owns.
 
 #include "contact/interface/interface_mesh.hpp"
+#include "contact/laws/frozen_adhesion.hpp"
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/assembly/constraints.hpp"
@@ -74,6 +75,15 @@ public:
   void mark_tangent_assembled();
   /// Accepts the last evaluation as the converged state of the increment.
   void commit();
+  /// Staggered fallback: evaluate() holds each pair's β at `beta` (no adhesion update, the
+  /// law wrapped in FrozenAdhesion) until unfreeze_adhesion().
+  void freeze_adhesion(const std::vector<double>& beta);
+  void unfreeze_adhesion() { frozen_ = false; }
+  /// β of every pair at the start of the increment (the committed state).
+  std::vector<double> committed_adhesion() const;
+  /// β the law gives at `u` from the committed state over a step `dtau` (the staggered
+  /// update), per pair.
+  std::vector<double> adhesion_at(const std::vector<double>& u, double dtau) const;
   /// Displacement reset keeping forces (geostatic stage): the current jumps become an
   /// offset, so that after the caller zeroes u the interface sees the same jumps.
   void absorb_displacements();
@@ -107,6 +117,9 @@ private:
   std::vector<LocalVector> offset_;    ///< jump kept through displacement resets
   double multiplier_change_ = 0;
   double gap_shift_ = 0;
+  FrozenAdhesion frozen_law_;
+  bool frozen_ = false;
+  std::vector<double> frozen_beta_;
   bool tangent_changed_ = true;
 };
 

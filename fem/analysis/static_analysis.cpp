@@ -152,13 +152,14 @@ struct StaticAnalysis::Impl {
   }
 
   struct IncrementLog {
-    int iterations = 0, linear_iterations = 0, uzawa_updates = 0;
+    int iterations = 0, linear_iterations = 0, uzawa_updates = 0, staggered = 0;
     std::vector<double> history; ///< relative force residual per iteration
     double contact = 0;          ///< last relative multiplier change
     std::string failure;
   };
 
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
+  bool solve_increment_staggered(double lambda, double dtau, IncrementLog& log);
   double residual_norm(const std::vector<double>& trial, double dtau,
                        const Constraints& constraints);
   RunSummary run(const std::function<void(const StepReport&)>& on_step);
@@ -331,6 +332,60 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
   }
 }
 
+// Fallback for an increment the monolithic iteration cannot solve even at the smallest step:
+// a debonding snap-back, where β = min(β_old, w/E) has no solution continuous with the last
+// state (Newton cycles between states). Alternate a solve with β held fixed (a well-posed
+// contact problem) and the update of β from the displacement. β only decreases along this
+// sequence, which therefore converges, to the equilibrium after the jump; the monolithic
+// iteration then confirms it with the true law. Leaves `u` at the last iterate.
+bool StaticAnalysis::Impl::solve_increment_staggered(double lambda, double dtau,
+                                                     IncrementLog& log) {
+  constexpr int max_updates = 200;
+  constexpr double beta_tolerance = 1e-6; // the monolithic check with the true law decides
+  std::vector<std::vector<double>> beta(interfaces.size());
+  for (std::size_t k = 0; k < interfaces.size(); ++k)
+    beta[k] = interfaces[k]->committed_adhesion();
+  auto merge = [&log](const IncrementLog& sub) {
+    log.iterations += sub.iterations;
+    log.linear_iterations += sub.linear_iterations;
+    log.uzawa_updates += sub.uzawa_updates;
+    log.history = sub.history;
+    log.contact = sub.contact;
+    log.failure = sub.failure;
+  };
+  auto unfreeze = [&] {
+    for (const auto& ia : interfaces)
+      ia->unfreeze_adhesion();
+  };
+  for (int it = 0; it < max_updates; ++it) {
+    for (std::size_t k = 0; k < interfaces.size(); ++k)
+      interfaces[k]->freeze_adhesion(beta[k]);
+    IncrementLog sub;
+    const bool ok = solve_increment(lambda, dtau, sub);
+    merge(sub);
+    ++log.staggered;
+    if (!ok) {
+      unfreeze();
+      log.failure = "staggered fallback, with beta held: " + log.failure;
+      return false;
+    }
+    double change = 0;
+    for (std::size_t k = 0; k < interfaces.size(); ++k) {
+      std::vector<double> next = interfaces[k]->adhesion_at(u, dtau);
+      for (std::size_t i = 0; i < next.size(); ++i)
+        change = std::max(change, std::abs(next[i] - beta[k][i]));
+      beta[k] = std::move(next);
+    }
+    if (change <= beta_tolerance) break;
+  }
+  unfreeze();
+  IncrementLog final_check;
+  const bool ok = solve_increment(lambda, dtau, final_check);
+  merge(final_check);
+  if (!ok) log.failure = "staggered fallback, final check with the true law: " + log.failure;
+  return ok;
+}
+
 RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)>& on_step) {
   const auto run_start = std::chrono::steady_clock::now();
   summary = RunSummary{};
@@ -372,13 +427,30 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       const double lambda = std::min(1.0, done + size);
       const std::vector<double> u_begin = u;
       IncrementLog log;
-      if (!solve_increment(lambda, (lambda - done) * stage.duration, log)) {
+      const double dtau = (lambda - done) * stage.duration;
+      bool converged = solve_increment(lambda, dtau, log);
+      if (!converged) {
         u = u_begin;
         matrix_ready = false;
         if (level < max_cutbacks) {
           ++level;
           continue;
         }
+        if (has_contact) {
+          IncrementLog staggered;
+          converged = solve_increment_staggered(lambda, dtau, staggered);
+          if (converged) {
+            log = staggered;
+            ++summary.staggered_increments;
+          } else {
+            u = u_begin;
+            matrix_ready = false;
+            log.failure += "; then " + staggered.failure + " after " +
+                           std::to_string(staggered.staggered) + " beta updates";
+          }
+        }
+      }
+      if (!converged) {
         std::ostringstream msg;
         msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
             << stage.increments << " (load factor " << done << " -> " << lambda << " after "
@@ -422,7 +494,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.uzawa_updates = log.uzawa_updates;
       rep.residual = log.history.empty() ? 0.0 : log.history.back();
       rep.cutbacks = level;
-      rep.unstable = level > 0;
+      rep.staggered = log.staggered;
+      rep.unstable = level > 0 || log.staggered > 0;
       // Snap-back: a resultant component lost over 20% of the largest value it has had, and
       // the loss is over 5% of the largest interface force of the model (so that a small
       // interface unloading smoothly, like a pile toe, is not flagged).

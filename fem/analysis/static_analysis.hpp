@@ -4,7 +4,9 @@
 /// increment is solved by Newton's method on R(u) = f_ext − f_int(u) + f_interfaces(u) = 0,
 /// with the interface multipliers updated as the contact solver says (see
 /// contact/solver/contact_solver_options.hpp). An increment that does not converge is
-/// halved (up to the contact solver's max_cutbacks) before the run stops.
+/// halved (up to the contact solver's max_cutbacks); if the smallest one still fails, a
+/// staggered iteration (β held, solve, update β, repeat) looks for the equilibrium after a
+/// debonding jump, and only then does the run stop.
 
 #include "contact/solver/interface_assembler.hpp"
 #include "fem/analysis/model.hpp"
@@ -39,6 +41,9 @@ struct StepReport {
   double seconds = 0;    ///< wall time of the increment
   int cutbacks = 0;      ///< halvings needed before this increment converged
   int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)
+  /// β updates of the staggered fallback (0 unless the increment jumped: a debonding
+  /// snap-back the monolithic iteration could not cross even at the smallest step).
+  int staggered = 0;
   /// Cut back, or a snap-back: an interface resultant component lost over 20% of its largest
   /// value (and over 5% of the largest interface force of the model) in one step.
   bool unstable = false;
@@ -47,8 +52,9 @@ struct StepReport {
 struct RunSummary {
   int steps = 0;
   int linear_solves = 0;
-  int linear_iterations = 0; ///< Krylov iterations over all solves
-  int matrix_setups = 0;     ///< preconditioner/factorisation set-ups
+  int linear_iterations = 0;    ///< Krylov iterations over all solves
+  int matrix_setups = 0;        ///< preconditioner/factorisation set-ups
+  int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time
   double assembly_seconds = 0; ///< cell loops, loads, reactions
