@@ -91,7 +91,6 @@ void PileResults::write_profile(const StepReport& report, const StaticAnalysis& 
                                 double head_mm) {
   const std::size_t k = interface_index(model_, kShaft);
   const auto& ia = *analysis.interfaces()[k];
-  if (ia.tied()) return; // a bonded shaft has no interface state to show
   const auto& pairs = model_.interfaces[k].pairs;
   const auto& results = ia.results();
   std::vector<std::size_t> order(pairs.size());

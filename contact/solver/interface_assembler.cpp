@@ -188,6 +188,25 @@ void InterfaceAssembler::commit() {
   }
 }
 
+void InterfaceAssembler::set_tied_forces(const std::vector<double>& force_all) {
+  force_.assign(iface_.pairs.size(), Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
+    const InterfacePair& p = iface_.pairs[i];
+    Eigen::Vector3d F = Eigen::Vector3d::Zero();
+    for (int c = 0; c < dim_; ++c)
+      F(c) = force_all[dofs_.dof(p.node_a, c)];
+    force_[i] = F;
+    const Eigen::Vector3d local = frame(p, dim_).transpose() * F;
+    PairResult& res = results_[i];
+    res.traction = p.weight > 0 ? LocalVector(local.head(dim_) / p.weight)
+                                : LocalVector(LocalVector::Zero(dim_));
+    res.r = res.traction;
+    res.jump = LocalVector::Zero(dim_);
+    res.beta = 1.0;
+    res.status = ContactStatus::Stick;
+  }
+}
+
 void InterfaceAssembler::freeze_adhesion(const std::vector<double>& beta) {
   if (beta.size() != committed_.size())
     throw Error("interface '" + iface_.name + "': freeze_adhesion needs one beta per pair");

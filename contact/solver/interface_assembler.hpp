@@ -75,6 +75,12 @@ public:
   void mark_tangent_assembled();
   /// Accepts the last evaluation as the converged state of the increment.
   void commit();
+  /// Tied interfaces (perfect bonding), for output: `force_all` holds, for every DOF, the
+  /// force body 1 exerts on body 2 at shared nodes (the caller computes it from body 1's
+  /// cells: minus their internal force plus their body forces). Sets each pair's traction
+  /// Qᵀ F / A_i (kPa; r = traction, p = its normal part, compression positive), β = 1,
+  /// status stick, and the resultant.
+  void set_tied_forces(const std::vector<double>& force_all);
   /// Staggered fallback: evaluate() holds each pair's β at `beta` (no adhesion update, the
   /// law wrapped in FrozenAdhesion) until unfreeze_adhesion().
   void freeze_adhesion(const std::vector<double>& beta);

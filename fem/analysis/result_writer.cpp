@@ -30,10 +30,10 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size)
     vtk_ = std::make_unique<VtkSeriesWriter>(directory_, "solution", rank, size);
   if (rank == 0) {
     for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
-      // Tied interfaces keep shared nodes and are not evaluated: their tractions would need
-      // the body-2 part of the internal forces, which is not computed yet, so they write
-      // nothing rather than zeros.
-      if (model.interface_laws[k]->is_tied()) continue;
+      // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
+      // needs body 1 as a region: not for tied facet-set interfaces.
+      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2)
+        continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);
       // The interface mesh: one node per pair (at node a), the body-1 facets as cells.

@@ -46,6 +46,7 @@ void SolidAssembler::set_initial_stress(
   sigma0_.assign(static_cast<std::size_t>(qp_offset_.back()) * nv_, 0.0);
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
+    if (region_filter_ >= 0 && mesh_.cell_regions[c] != region_filter_) continue;
     ElementValues& ev = values_for(mesh_.cell_types[c]);
     ev.reinit(mesh_, c);
     for (int q = 0; q < ev.num_points(); ++q) {
@@ -69,6 +70,7 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
   VoigtMatrix D;
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
+    if (region_filter_ >= 0 && mesh_.cell_regions[c] != region_filter_) continue;
     ElementValues& ev = values_for(mesh_.cell_types[c]);
     ev.reinit(mesh_, c);
     dofs_.cell_dofs(mesh_, c, cell_dofs);
@@ -122,11 +124,14 @@ void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& c
   });
 }
 
-void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f) {
+void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f,
+                                    int region) {
+  region_filter_ = region;
   loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
     for (std::size_t a = 0; a < cell_dofs.size(); ++a)
       f.add(cell_dofs[a], f_e[a]);
   });
+  region_filter_ = -1;
 }
 
 void SolidAssembler::commit() {

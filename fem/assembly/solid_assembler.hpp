@@ -35,8 +35,9 @@ public:
   /// and stress are kept for commit().
   void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
                 DistributedVector& R);
-  /// Adds the unconstrained internal force f_int(u) to `f` (reactions).
-  void internal_force(const std::vector<double>& u, DistributedVector& f);
+  /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
+  /// only that region's cells (the force a body's cells exert on shared nodes).
+  void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
   /// Accepts the last trial state (end of a converged increment).
   void commit();
 
@@ -63,6 +64,7 @@ private:
   const DofMap& dofs_;
   std::vector<const Material*> materials_;
   std::vector<Index> owned_cells_;
+  int region_filter_ = -1; ///< loop() skips cells of other regions when ≥ 0
   int nv_;
   std::map<CellType, std::unique_ptr<ElementValues>> values_;
   // Per quadrature point only what the physics needs (σ0); strain and stress are kept as
