@@ -111,6 +111,9 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
       files += std::string(", ") + png;
   std::cout << "pile_pullout: results in " << writer.directory() << " (" << files
             << "; ParaView: " << writer.pvd_path() << ")\n";
+  if (plots && std::filesystem::exists(writer.directory() + "/pullout_curve.png"))
+    std::cout << "pile_pullout: plot of the pull-out curve: " << writer.directory()
+              << "/pullout_curve.png\n";
   return 0;
 }
 
