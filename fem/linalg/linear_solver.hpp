@@ -39,15 +39,17 @@ struct LinearSolveStats {
 /// Solves A x = b for a SparseMatrix A with Belos "Pseudo Block CG" / "Pseudo Block GMRES"
 /// (right preconditioning for GMRES) or Amesos2 KLU2 (the matrix gathered on rank 0).
 /// Preconditioners: MueLu smoothed aggregation ("number of equations" = DOFs per node,
-/// near-null space from set_near_null_space(), symmetric Gauss-Seidel smoothing, KLU2 coarse
-/// solve on one rank and per-rank deep-fill ILU on several), Ifpack2 ILU(0) (RILUK, per rank),
-/// Ifpack2 Jacobi. The direct solver's tolerance check is loosened to max(tolerance, 1e-6):
+/// near-null space from set_near_null_space(), symmetric Gauss-Seidel smoothing, W-cycle, KLU2
+/// coarse solve on one rank and per-rank deep-fill ILU on several), Ifpack2 ILU(0) (RILUK, per
+/// rank), Ifpack2 Jacobi. The direct solver's tolerance check is loosened to max(tolerance, 1e-6):
 /// its accuracy is set by conditioning, not iterations.
 ///
 /// Usage: setup(A) after each assembly of A, then solve() any number of times. The solver
 /// keeps a reference to A's values, so setup() must follow every refill. Calling setup() again
 /// after refilling the same matrix reuses MueLu's aggregates and tentative prolongator, and KLU2's
-/// symbolic factorisation.
+/// symbolic factorisation; MueLu is rebuilt from scratch instead if an entry stored as 0.0 at
+/// its last build has become nonzero (a contact or friction coupling switching on), which its
+/// reused matrix products cannot take.
 class LinearSolver {
 public:
   /// Throws bipot::InputError listing every invalid option with the allowed values.

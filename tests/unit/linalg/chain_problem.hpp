@@ -27,6 +27,10 @@ struct Chain {
   int num_elements = 100;
   Index tie_a = 4;
   double tie_stiffness = 100.0; // = 1/h, an element's stiffness
+  /// The tie pulls DOF tie_a towards tie_b only: row tie_a gets k (u_a - u_b), row tie_b
+  /// nothing, as a one-sided contact or friction tangent does (nonsymmetric). The pattern
+  /// keeps both rows' couplings either way; unused entries are stored zeros.
+  bool one_way_tie = false;
 
   Index num_dofs() const { return num_elements - 1; }
   Index tie_b() const { return num_dofs() - 1 - tie_a; }
@@ -70,7 +74,7 @@ struct Chain {
       const Index dofs[2] = {tie_a, tie_b()};
       const double k = factor * tie_stiffness;
       const double ke[4] = {k, -k, -k, k};
-      A.add_dense(dofs, 2, ke);
+      A.add_block(dofs, one_way_tie ? 1 : 2, dofs, 2, ke);
     }
     A.finish_assembly();
   }
