@@ -1,0 +1,178 @@
+#pragma once
+/// Internal to fem/analysis: the state of a StaticAnalysis, shared by static_analysis.cpp (the
+/// stage driver and the public accessors) and increment_solver.cpp (the iterations of one
+/// increment: Newton/Uzawa, line search, the staggered fallback).
+
+#include "fem/analysis/initial_stress.hpp"
+#include "fem/analysis/result_writer.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/assembly/constraints.hpp"
+#include "fem/assembly/load_assembler.hpp"
+#include "fem/assembly/solid_assembler.hpp"
+#include "fem/core/error.hpp"
+#include "fem/linalg/communicator.hpp"
+#include "fem/linalg/distributed_vector.hpp"
+#include "fem/linalg/dof_distribution.hpp"
+#include "fem/linalg/linear_solver.hpp"
+#include "fem/linalg/sparse_matrix.hpp"
+#include "fem/linalg/sparsity_pattern.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace bipot {
+
+namespace analysis_detail {
+
+// A cell belongs to the rank owning its lowest node: deterministic, no communication, and
+// with node-block row ownership most of its rows are local.
+inline std::vector<bool> owned_cell_flags(const Mesh& mesh, const DofDistribution& dist) {
+  std::vector<bool> owned(mesh.num_cells());
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const Index* nodes = mesh.cell(c);
+    const Index lowest = *std::min_element(nodes, nodes + mesh.cell_num_nodes(c));
+    owned[c] = dist.owner_of_node(lowest) == dist.rank();
+  }
+  return owned;
+}
+
+inline std::vector<Index> indices_of(const std::vector<bool>& flags) {
+  std::vector<Index> out;
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) out.push_back(static_cast<Index>(i));
+  return out;
+}
+
+inline bool all_linear(const Model& model) {
+  return std::all_of(model.materials.begin(), model.materials.end(),
+                     [](const auto& m) { return m->is_linear(); });
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+} // namespace analysis_detail
+
+struct StaticAnalysis::Impl {
+  const Model& model;
+  AnalysisOptions options;
+  ResultWriter* writer;
+  int dim;
+  DofMap dofs;
+  DofDistribution dist;
+  std::vector<bool> cell_owned;
+  SolidAssembler solid;
+  LoadAssembler loads;
+  std::vector<std::unique_ptr<contact::InterfaceAssembler>> interfaces;
+  bool has_contact = false; ///< some interface is not tied: the tangent changes
+  std::unique_ptr<SparseMatrix> K;
+  DistributedVector R, du, F_prev, F_cur, F_step, reaction;
+  LinearSolver solver;
+  std::vector<double> u;
+  std::vector<double> reaction_all;
+  bool linear;
+  bool matrix_ready = false;                     ///< K and the solver hold the current tangent
+  const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
+  RunSummary summary;
+
+  // Boundary-condition targets of the current stage and the values they start from.
+  std::map<Index, double> target, start;
+  // Interface gap shifts (per interface) at the start and the end of the current stage.
+  std::vector<double> gap_start, gap_target;
+
+  Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
+      : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
+        dofs(m.mesh.num_nodes(), dim), dist(m.mesh.num_nodes(), dim),
+        cell_owned(analysis_detail::owned_cell_flags(m.mesh, dist)),
+        solid(m.mesh, m.kinematics, dofs, m.material_of_region,
+              analysis_detail::indices_of(cell_owned)),
+        loads(m.mesh, m.kinematics, dofs, cell_owned), R(dist), du(dist), F_prev(dist), F_cur(dist),
+        F_step(dist), reaction(dist),
+        solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)), u(dofs.num_dofs(), 0.0),
+        linear(analysis_detail::all_linear(m)) {
+    for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
+      interfaces.push_back(std::make_unique<contact::InterfaceAssembler>(
+          m.interfaces[k], *m.interface_laws[k], dofs, dist));
+      has_contact = has_contact || !interfaces.back()->tied();
+    }
+    SparsityPattern pattern;
+    solid.add_to_pattern(pattern);
+    for (const auto& ia : interfaces)
+      ia->add_to_pattern(pattern);
+    K = std::make_unique<SparseMatrix>(dist, pattern);
+    std::vector<double> coords;
+    for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
+         ++n)
+      coords.insert(coords.end(), m.mesh.nodes[n].begin(), m.mesh.nodes[n].end());
+    // Axisymmetry too gets the three plane-strain rigid modes: u_r = const costs only
+    // ε_θθ = u/r, small away from the axis, so AMG must see it, and the in-plane rotation
+    // helps as well. CG + MueLu iterations on a 200x50-cell cylinder wall (r in [1, 2]),
+    // axial mode only / both translations / three modes: quad8 341 / 42 / 30 (1 rank),
+    // 57 / 49 with 2 ranks; quad4 129 / 18 / 13, 31 / 27 with 2 ranks.
+    solver.set_near_null_space(dim, false, coords);
+    if (!m.spec.initial_stress.empty()) solid.set_initial_stress(initial_stress_function(m));
+    F_prev.set_zero();
+    if (has_contact) choose_augmentation();
+  }
+
+  // ρ per pair from the bulk stiffness diagonal (one bulk assembly, before any constraint).
+  void choose_augmentation() {
+    K->set_zero();
+    R.set_zero();
+    solid.assemble(u, Constraints{}, K.get(), R);
+    K->finish_assembly();
+    R.finish_assembly();
+    const std::vector<double> diagonal = K->diagonal().gather_all();
+    for (const auto& ia : interfaces)
+      ia->set_augmentation(model.contact_solver, diagonal);
+  }
+
+  std::vector<Index> set_nodes(const std::string& name) const {
+    auto it = model.mesh.node_sets.find(name);
+    if (it != model.mesh.node_sets.end()) return it->second;
+    return model.mesh.facet_set_nodes(name);
+  }
+
+  void assemble_loads(const StageSpec& stage, DistributedVector& F) const {
+    F.set_zero();
+    for (const auto& ld : stage.loads) {
+      switch (ld.type) {
+      case LoadSpec::Type::Pressure:
+        loads.add_pressure(ld.set, ld.pressure, F);
+        break;
+      case LoadSpec::Type::Traction:
+        loads.add_traction(ld.set, ld.traction, F);
+        break;
+      case LoadSpec::Type::Gravity:
+        loads.add_gravity(model.material_of_region, F);
+        break;
+      }
+    }
+    F.finish_assembly();
+  }
+
+  struct IncrementLog {
+    int iterations = 0, linear_iterations = 0, uzawa_updates = 0, staggered = 0;
+    std::vector<double> history; ///< relative force residual per iteration
+    double contact = 0;          ///< last relative multiplier change
+    std::string failure;
+  };
+
+  bool solve_increment(double lambda, double dtau, IncrementLog& log);
+  void tied_interface_forces(double gravity_factor);
+  // Share of gravity in the loads at the end of the previous stage and of the current one
+  // (0 or 1), ramped like the loads.
+  double gravity_before = 0.0, gravity_now = 0.0;
+  bool solve_increment_staggered(double lambda, double dtau, IncrementLog& log);
+  double residual_norm(const std::vector<double>& trial, double dtau,
+                       const Constraints& constraints);
+  RunSummary run(const std::function<void(const StepReport&)>& on_step);
+};
+
+} // namespace bipot
