@@ -229,3 +229,58 @@ TEST(BoxSets, SelectNodesInsideAndReportEmptyBoxes) {
 
 } // namespace
 } // namespace bipot
+
+namespace bipot {
+namespace {
+
+// Region-restricted box sets keep one side's copies of split interface nodes; their errors
+// and those of interface_gaps name the user's line.
+TEST(BoxSets, RegionKeepsOneSideOfAnInterface) {
+  const std::string iface =
+      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: coulomb_signorini\n";
+  const std::string sets = "  sets:\n"
+                           "    seam_left: {min: [1, 0], max: [1, 1], region: left}\n"
+                           "    seam_middle: {min: [1, 0], max: [1, 1], region: middle}\n"
+                           "    seam: {min: [1, 0], max: [1, 1]}\n";
+  const std::string text = replace(with_interface(iface), "    regions: [left, middle, right]\n",
+                                   "    regions: [left, middle, right]\n" + sets);
+  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  // Two nodes on x = 1; the split gives the middle region copies: 2 + 2 in the plain set.
+  const auto& left = model.mesh.node_sets.at("seam_left");
+  const auto& middle = model.mesh.node_sets.at("seam_middle");
+  EXPECT_EQ(model.mesh.node_sets.at("seam").size(), 4u);
+  ASSERT_EQ(left.size(), 2u);
+  ASSERT_EQ(middle.size(), 2u);
+  // Each pair joins a node of seam_left (body 1) to one of seam_middle (body 2).
+  int paired = 0;
+  for (const auto& p : model.interfaces[0].pairs) {
+    const bool a_left = p.node_a == left[0] || p.node_a == left[1];
+    const bool b_middle = p.node_b == middle[0] || p.node_b == middle[1];
+    paired += a_left && b_middle;
+  }
+  EXPECT_EQ(paired, 2);
+
+  const auto p = problems_of(replace(with_interface(iface), "    regions: [left, middle, right]\n",
+                                     "    regions: [left, middle, right]\n  sets:\n"
+                                     "    a: {min: [1, 0], max: [1, 1], region: midle}\n"));
+  EXPECT_TRUE(has(p, "in.yaml:9:5: mesh.sets.a: no region named 'midle' in the mesh (did you "
+                     "mean 'middle'?); available: left, middle, right"));
+  // The box holds nodes, but none of the region's (checked after the split).
+  const auto q = problems_of(replace(with_interface(iface), "    regions: [left, middle, right]\n",
+                                     "    regions: [left, middle, right]\n  sets:\n"
+                                     "    b: {min: [2.5, 0], max: [3, 1], region: left}\n"));
+  EXPECT_TRUE(has(q, "in.yaml:9:5: mesh.sets.b: no node of region 'left' lies in this box"));
+}
+
+TEST(InterfaceInput, GapOfAnUnknownInterface) {
+  const std::string text =
+      with_interface("interfaces:\n  - name: joint\n    between: [left, middle]\n"
+                     "    law: coulomb_signorini\n") +
+      "    interface_gaps:\n      - {interface: jiont, value: -1.0e-4}\n";
+  const auto p = problems_of(text);
+  EXPECT_TRUE(has(p, "in.yaml:21:21: stages[0].interface_gaps[0].interface: no interface "
+                     "named 'jiont' (did you mean 'joint'?); declared: joint"));
+}
+
+} // namespace
+} // namespace bipot
