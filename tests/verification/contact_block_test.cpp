@@ -11,6 +11,8 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 
+#include "tests/support/serial_reference.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,15 +95,6 @@ StageForces run(const std::string& text) {
   return out;
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double d = 0, n = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    d += (a[i] - b[i]) * (a[i] - b[i]);
-    n += b[i] * b[i];
-  }
-  return std::sqrt(d / n);
-}
-
 TEST(ContactBlock, SlidesAtMuTimesNormalForceAndOpensWhenLifted) {
   const double mu = 0.3;
   const auto res = run(block_input(coulomb(mu), solver("semismooth_newton"), press_shear_lift));
@@ -138,7 +131,7 @@ TEST(ContactBlock, SticksBeforeSliding) {
 TEST(ContactBlock, UzawaAndNewtonAgree) {
   const auto newton = run(block_input(coulomb(0.3), solver("semismooth_newton"), press_shear_lift));
   const auto uzawa = run(block_input(coulomb(0.3), solver("bipotential_uzawa"), press_shear_lift));
-  EXPECT_LT(relative_difference(uzawa.u, newton.u), 1e-8);
+  EXPECT_LT(test::relative_difference(uzawa.u, newton.u), 1e-8);
 }
 
 TEST(ContactBlock, RccmWithoutAdhesionIsCoulombSignorini) {
@@ -148,7 +141,7 @@ TEST(ContactBlock, RccmWithoutAdhesionIsCoulombSignorini) {
       "decohesion_energy: 0.01, friction_coefficient: 0.3, initial_adhesion: 0.0}\n";
   const auto a = run(block_input(rccm, solver("semismooth_newton"), press_shear_lift));
   const auto b = run(block_input(coulomb(0.3), solver("semismooth_newton"), press_shear_lift));
-  EXPECT_LT(relative_difference(a.u, b.u), 1e-10);
+  EXPECT_LT(test::relative_difference(a.u, b.u), 1e-10);
 }
 
 TEST(ContactBlock, PerfectBondingEqualsNoInterface) {
@@ -162,7 +155,7 @@ TEST(ContactBlock, PerfectBondingEqualsNoInterface) {
   const auto a = run(block_input(bonded, "", press));
   const auto b = run(block_input("", "", press));
   ASSERT_EQ(a.u.size(), b.u.size());
-  EXPECT_LT(relative_difference(a.u, b.u), 1e-10);
+  EXPECT_LT(test::relative_difference(a.u, b.u), 1e-10);
 }
 
 TEST(ContactBlock, StiffStrongRccmApproachesPerfectBonding) {
@@ -186,7 +179,7 @@ TEST(ContactBlock, StiffStrongRccmApproachesPerfectBonding) {
     const auto a = run(block_input(rccm, solver("semismooth_newton"), press));
     // The split mesh has extra nodes at the end: compare the shared numbering only.
     std::vector<double> u(a.u.begin(), a.u.begin() + bonded.u.size());
-    differences.push_back(relative_difference(u, bonded.u));
+    differences.push_back(test::relative_difference(u, bonded.u));
   }
   EXPECT_LT(differences[0], 1e-2);
   EXPECT_LT(differences[1], 1e-4);

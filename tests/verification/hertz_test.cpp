@@ -23,6 +23,7 @@
 #include "fem/linalg/communicator.hpp"
 #include "fem/mesh/structured_mesh.hpp"
 #include "tests/support/scratch_dir.hpp"
+#include "tests/support/serial_reference.hpp"
 
 #include <gmsh.h>
 #include <gtest/gtest.h>
@@ -225,15 +226,6 @@ const Pressures& hertz(const std::string& solver) {
   return it->second;
 }
 
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  double d = 0, n = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    d += (a[i] - b[i]) * (a[i] - b[i]);
-    n += b[i] * b[i];
-  }
-  return std::sqrt(d / n);
-}
-
 TEST(Hertz, HalfWidthAndPeakPressureMatchTheClosedForm) {
   const Pressures& res = hertz("semismooth_newton");
   // Equilibrium of the cylinder: its top carries what the interface carries (solver
@@ -267,7 +259,7 @@ TEST(Hertz, UzawaAndNewtonAgree) {
   const Pressures& newton = hertz("semismooth_newton");
   const Pressures& uzawa = hertz("bipotential_uzawa");
   // Both stop at 1e-12 relative; 1e-8 leaves room for the conditioning.
-  const double du = relative_difference(uzawa.u, newton.u);
+  const double du = test::relative_difference(uzawa.u, newton.u);
   EXPECT_LT(du, 1e-8);
   ASSERT_EQ(uzawa.p.size(), newton.p.size());
   double dp = 0;
@@ -287,23 +279,11 @@ TEST(Hertz, OneAndTwoRanksAgree) {
   const Pressures& res = hertz("semismooth_newton");
   std::vector<double> values = res.u;
   values.insert(values.end(), res.p.begin(), res.p.end());
-  const std::string file = "hertz_serial_solution.txt";
-  if (mpi_size() == 1) {
-    std::ofstream out(file);
-    out << std::setprecision(17);
-    for (double v : values)
-      out << v << "\n";
-    ASSERT_TRUE(out.good());
-    return;
-  }
-  std::ifstream in(file);
-  ASSERT_TRUE(in.good()) << "run the 1-rank test first (CTest fixture): " << file;
-  std::vector<double> ref;
-  for (double v; in >> v;)
-    ref.push_back(v);
+  const auto ref = test::serial_reference("hertz_serial_solution.txt", values);
+  if (mpi_size() == 1) return;
   ASSERT_EQ(ref.size(), values.size());
   const std::vector<double> ref_u(ref.begin(), ref.begin() + res.u.size());
-  const double du = relative_difference(res.u, ref_u);
+  const double du = test::relative_difference(res.u, ref_u);
   EXPECT_LT(du, 1e-10);
   double dp = 0;
   for (std::size_t i = 0; i < res.p.size(); ++i)

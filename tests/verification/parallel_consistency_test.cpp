@@ -5,6 +5,8 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 
+#include "tests/support/serial_reference.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,27 +44,10 @@ std::vector<double> solve(const std::string& method) {
 }
 
 void compare_or_write(const std::string& name, const std::vector<double>& u) {
-  const std::string file = "parallel_consistency_" + name + ".txt";
-  if (mpi_size() == 1) {
-    std::ofstream out(file);
-    out << std::setprecision(17);
-    for (double v : u)
-      out << v << "\n";
-    ASSERT_TRUE(out.good());
-    return;
-  }
-  std::ifstream in(file);
-  ASSERT_TRUE(in.good()) << "run the 1-rank test first (CTest fixture): " << file;
-  std::vector<double> ref;
-  for (double v; in >> v;)
-    ref.push_back(v);
+  const auto ref = test::serial_reference("parallel_consistency_" + name + ".txt", u);
+  if (mpi_size() == 1) return;
   ASSERT_EQ(ref.size(), u.size());
-  double diff = 0, norm = 0;
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    diff += (u[i] - ref[i]) * (u[i] - ref[i]);
-    norm += ref[i] * ref[i];
-  }
-  EXPECT_LT(std::sqrt(diff / norm), 1e-10);
+  EXPECT_LT(test::relative_difference(u, ref), 1e-10);
 }
 
 TEST(ParallelConsistency, DirectSolver) {
