@@ -23,7 +23,7 @@ namespace bipot::contact {
 struct ContactSolverOptions {
   std::string type = "semismooth_newton";
   double augmentation = 0;         ///< ρ (kN/m³); 0 = automatic per pair
-  double augmentation_factor = 10; ///< multiplies the automatic ρ
+  double augmentation_factor = 30; ///< multiplies the automatic ρ
   double tolerance = 1e-8;         ///< on the force residual and on the multiplier change
   int max_iterations = 50;         ///< Newton iterations (inner ones for Uzawa)
   int max_outer_iterations = 1;    ///< Uzawa multiplier updates per increment

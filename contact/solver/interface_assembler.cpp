@@ -7,6 +7,7 @@
 #include "fem/linalg/sparsity_pattern.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace bipot::contact {
 
@@ -36,6 +37,9 @@ InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLa
   for (auto& s : committed_)
     if (s.jump.size() == 0) s.jump = s.r = LocalVector::Zero(dim_);
   multiplier_.assign(n, LocalVector::Zero(dim_));
+  previous_r_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    previous_r_[i] = committed_[i].r;
   results_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     results_[i].beta = committed_[i].beta;
@@ -83,9 +87,9 @@ void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
   }
 }
 
-void InterfaceAssembler::begin_increment() {
+void InterfaceAssembler::begin_increment(double extrapolation) {
   for (std::size_t i = 0; i < multiplier_.size(); ++i)
-    multiplier_[i] = committed_[i].r;
+    multiplier_[i] = committed_[i].r + extrapolation * (committed_[i].r - previous_r_[i]);
 }
 
 void InterfaceAssembler::absorb_displacements() {
@@ -108,6 +112,7 @@ LocalVector InterfaceAssembler::local_jump(std::size_t i, const std::vector<doub
 
 void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
   multiplier_change_ = 0;
+  roundoff_force_ = 0;
   tangent_changed_ = false;
   if (tied()) return;
   InterfaceResponseDerivatives d;
@@ -127,12 +132,19 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
     res.traction = resp.traction;
     res.status = resp.status;
     multiplier_change_ = std::max(multiplier_change_, p.weight * (resp.r - multiplier_[i]).norm());
+    double u_size = 0;
+    for (int c = 0; c < dim_; ++c)
+      u_size = std::max(
+          {u_size, std::abs(u[dofs_.dof(p.node_a, c)]), std::abs(u[dofs_.dof(p.node_b, c)])});
+    const double err = std::numeric_limits<double>::epsilon() * p.weight * rho_[i] * u_size;
+    roundoff_force_ += err * err;
     tangent_[i] = d.dt_djump;
     if (!(tangent_[i] == assembled_tangent_[i])) tangent_changed_ = true;
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
     t.head(dim_) = resp.traction;
     force_[i] = p.weight * (frame(p, dim_) * t);
   }
+  roundoff_force_ = std::sqrt(roundoff_force_);
 }
 
 void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMatrix* K,
@@ -181,6 +193,7 @@ void InterfaceAssembler::mark_tangent_assembled() {
 
 void InterfaceAssembler::commit() {
   for (std::size_t i = 0; i < committed_.size(); ++i) {
+    previous_r_[i] = committed_[i].r;
     committed_[i].beta = results_[i].beta;
     committed_[i].jump = results_[i].jump;
     committed_[i].r = results_[i].r;

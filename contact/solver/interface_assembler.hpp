@@ -55,8 +55,12 @@ public:
   void set_augmentation(const ContactSolverOptions& options,
                         const std::vector<double>& diagonal_all);
 
-  /// Starts an increment: multipliers r̂ from the committed state.
-  void begin_increment();
+  /// Starts an increment: multipliers r̂ from the committed state, extrapolated along the
+  /// last committed increment by `extrapolation` (= this increment's size / the last one's;
+  /// 0 at the start of a stage). Only the starting guess changes, not the solution: under
+  /// proportional loading it is already the converged r̂, which saves the augmented
+  /// Lagrangian updates that would otherwise converge to it linearly.
+  void begin_increment(double extrapolation = 0.0);
   /// Evaluates every pair at `u` (all DOFs) with the current multipliers r̂: β, traction,
   /// Proj(τ), status, tangent. Pseudo-time step `dtau` (s).
   void evaluate(const std::vector<double>& u, double dtau);
@@ -105,6 +109,10 @@ public:
   std::array<double, 3> resultant() const;
   /// Largest A_i ‖t_i‖ (kN): a force scale for convergence checks.
   double force_scale() const;
+  /// Round-off in the interface forces of the last evaluation (kN, a 2-norm over pairs):
+  /// A_i ρ_i ĝ_i takes the difference of two displacements of size ‖u‖, so it carries an
+  /// error of about ε A_i ρ_i ‖u‖ that no iteration can remove. Grows with ρ.
+  double roundoff_force() const { return roundoff_force_; }
 
 private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
@@ -116,12 +124,14 @@ private:
   std::vector<bool> owned_;
   std::vector<double> rho_;
   std::vector<InterfaceState> committed_;
+  std::vector<LocalVector> previous_r_; ///< r of the increment before the committed one
   std::vector<LocalVector> multiplier_;
   std::vector<PairResult> results_;
   std::vector<LocalMatrix> tangent_, assembled_tangent_;
   std::vector<Eigen::Vector3d> force_; ///< A_i Q_i t_i, global components (padded to 3)
   std::vector<LocalVector> offset_;    ///< jump kept through displacement resets
   double multiplier_change_ = 0;
+  double roundoff_force_ = 0;
   double gap_shift_ = 0;
   FrozenAdhesion frozen_law_;
   bool frozen_ = false;

@@ -95,6 +95,35 @@ StageForces run(const std::string& text) {
   return out;
 }
 
+// The increment predictor (u and the multipliers extrapolated along the last increment) is
+// exact under proportional loading of a sticking interface: every increment after the first
+// converges with one linear solve and no multiplier update, where the first needs updates
+// (the augmented Lagrangian converging from the committed multipliers).
+TEST(ContactBlock, PredictorMakesProportionalIncrementsExact) {
+  const std::string press = "  - name: press\n    increments: 4\n    boundary_conditions:\n"
+                            "      - {set: bottom, component: x, value: 0}\n"
+                            "      - {set: bottom, component: y, value: 0}\n"
+                            "      - {set: top, component: x, value: 0}\n"
+                            "      - {set: top, component: y, value: -1.0e-3}\n";
+  for (const std::string type : {"semismooth_newton", "bipotential_uzawa"}) {
+    const Model model =
+        build_model(read_problem_text(block_input(coulomb(0.3), solver(type), press), "b.yaml"));
+    StaticAnalysis analysis(model);
+    std::vector<StepReport> steps;
+    analysis.run([&](const StepReport& r) { steps.push_back(r); });
+    ASSERT_EQ(steps.size(), 4u) << type;
+    EXPECT_GT(steps[0].uzawa_updates, 0) << type;
+    for (std::size_t k = 1; k < steps.size(); ++k) {
+      EXPECT_EQ(steps[k].uzawa_updates, 0) << type << " increment " << k + 1;
+      EXPECT_EQ(steps[k].iterations, 1) << type << " increment " << k + 1;
+    }
+    int sticking = 0;
+    for (const auto& r : analysis.interfaces()[0]->results())
+      sticking += r.status == contact::ContactStatus::Stick;
+    EXPECT_EQ(sticking, static_cast<int>(analysis.interfaces()[0]->num_pairs())) << type;
+  }
+}
+
 TEST(ContactBlock, SlidesAtMuTimesNormalForceAndOpensWhenLifted) {
   const double mu = 0.3;
   const auto res = run(block_input(coulomb(mu), solver("semismooth_newton"), press_shear_lift));

@@ -165,6 +165,11 @@ struct StaticAnalysis::Impl {
   };
 
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
+  static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
+  // Predictor of the next increment: its size over the last converged one's in this stage
+  // (0 at a stage's first increment); u and the multipliers start at committed + this ×
+  // (their last change). Set by the stage driver.
+  double extrapolation = 0.0;
   void tied_interface_forces(double gravity_factor);
   // Share of gravity in the loads at the end of the previous stage and of the current one
   // (0 or 1), ramped like the loads.
