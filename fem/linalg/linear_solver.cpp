@@ -2,6 +2,7 @@
 
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "fem/linalg/detail/lu_preconditioner.hpp"
 #include "fem/linalg/detail/rooted_direct_solver.hpp"
 #include "fem/linalg/detail/tpetra_types.hpp"
 
@@ -88,10 +89,31 @@ struct LinearSolver::Impl {
   std::vector<std::size_t> muelu_zeros; ///< zero_entries(*A) when muelu was built
   Teuchos::RCP<Ifpack2Preconditioner> ifpack;
   std::unique_ptr<detail::RootedDirectSolver> direct;
+  Teuchos::RCP<detail::LuPreconditioner> lu; ///< preconditioner "lu"
+  int lu_iterations = 0;                     ///< GMRES iterations on the current lu factors
+  double lu_factor_seconds = 0, lu_stale_seconds = 0; ///< last factorisation; GMRES since
+  int lu_stale_iterations = 0;
+  bool lu_current = false; ///< lu factors are of the matrix of the last setup()
   Teuchos::RCP<detail::Vector> b_work, x_work, r_work;
   double setup_seconds = 0;
 
   Teuchos::RCP<MultiVector> near_null_space(const SparseMatrix::Impl& m) const;
+
+  void factorize_lu() {
+    const auto t0 = std::chrono::steady_clock::now();
+    lu->factorize(A);
+    lu_factor_seconds = seconds_since(t0);
+    lu_stale_seconds = 0;
+    lu_stale_iterations = lu_iterations = 0;
+    lu_current = true;
+  }
+  /// GMRES iterations a solve on old factors may take before refactorising is cheaper.
+  int stale_lu_limit(const LinearSolverOptions& o) const {
+    if (o.lu_refresh > 0) return std::max(1, o.lu_refresh - lu_iterations);
+    if (lu_stale_iterations == 0) return o.max_iterations; // no cost per iteration known yet
+    const double per_iteration = lu_stale_seconds / lu_stale_iterations;
+    return std::max(1, static_cast<int>((lu_factor_seconds - lu_stale_seconds) / per_iteration));
+  }
 };
 
 Teuchos::RCP<MultiVector> LinearSolver::Impl::near_null_space(const SparseMatrix::Impl& m) const {
@@ -221,6 +243,17 @@ void LinearSolver::setup(const SparseMatrix& matrix) {
         im.muelu_zeros = zero_entries(*im.A);
         im.nns_changed = false;
       }
+    } else if (o.preconditioner == "lu") {
+      // Ski-rental rule: keep paying GMRES iterations on old factors until they have cost
+      // as much as a new factorisation (at most twice the best choice in hindsight).
+      const bool worn = o.lu_refresh > 0 ? im.lu_iterations >= o.lu_refresh
+                                         : im.lu_stale_seconds >= im.lu_factor_seconds;
+      if (im.lu.is_null() || !same_matrix || worn) {
+        if (im.lu.is_null()) im.lu = Teuchos::rcp(new detail::LuPreconditioner);
+        im.factorize_lu();
+      } else {
+        im.lu_current = false;
+      }
     } else if (o.preconditioner == "ilu" || o.preconditioner == "jacobi") {
       if (!same_matrix || im.ifpack.is_null()) {
         Teuchos::ParameterList p;
@@ -243,6 +276,7 @@ void LinearSolver::setup(const SparseMatrix& matrix) {
     im.muelu = Teuchos::null;
     im.ifpack = Teuchos::null;
     im.direct.reset();
+    im.lu = Teuchos::null;
     if (dynamic_cast<const Error*>(&e)) throw;
     throw SolverError("linear solver setup (" + o.method + " + " + o.preconditioner +
                       ") failed: " + e.what());
@@ -286,6 +320,8 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
       Teuchos::RCP<Operator> prec;
       if (!im.muelu.is_null() && o.preconditioner == "muelu")
         prec = im.muelu;
+      else if (o.preconditioner == "lu")
+        prec = im.lu;
       else if (!im.ifpack.is_null() && o.preconditioner != "none")
         prec = im.ifpack;
       // CG needs a symmetric preconditioner on either side; GMRES on the right keeps its
@@ -296,15 +332,19 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
         else
           problem->setRightPrec(prec);
       }
+      // Old LU factors get at most the iterations left before a refresh: past that, factorising
+      // the current matrix is the cheaper way to finish this solve.
+      const bool stale_lu = o.preconditioner == "lu" && !im.lu_current;
+      const int limit =
+          stale_lu ? std::min(o.max_iterations, im.stale_lu_limit(o)) : o.max_iterations;
       // A Krylov run can stop short of the tolerance with iterations to spare when its
       // recursive residual drifts from the true one (GMRES "loss of accuracy"): restarting
       // from the current iterate recomputes the true residual. Two restarts at most.
-      for (int attempt = 0; attempt < 3 && !reached && stats.iterations < o.max_iterations;
-           ++attempt) {
+      for (int attempt = 0; attempt < 3 && !reached && stats.iterations < limit; ++attempt) {
         problem->setProblem(); // takes the current x as initial guess
         auto params = Teuchos::rcp(new Teuchos::ParameterList);
         params->set("Convergence Tolerance", o.tolerance);
-        params->set("Maximum Iterations", o.max_iterations - stats.iterations);
+        params->set("Maximum Iterations", limit - stats.iterations);
         params->set("Implicit Residual Scaling", "Norm of RHS");
         params->set("Verbosity", o.verbose ? Belos::Errors + Belos::Warnings +
                                                  Belos::StatusTestDetails + Belos::FinalSummary
@@ -316,7 +356,7 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
           result = solver.solve();
           stats.iterations += solver.getNumIters();
         } else {
-          const int remaining = o.max_iterations - stats.iterations;
+          const int remaining = limit - stats.iterations;
           params->set("Explicit Residual Scaling", "Norm of RHS");
           params->set("Num Blocks", std::min(o.restart, remaining));
           params->set("Maximum Restarts", remaining / o.restart + 1);
@@ -325,6 +365,28 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
           stats.iterations += solver.getNumIters();
         }
         reached = result == Belos::Converged;
+      }
+      if (o.preconditioner == "lu") {
+        im.lu_iterations += stats.iterations;
+        if (stale_lu) {
+          im.lu_stale_seconds += seconds_since(start);
+          im.lu_stale_iterations += stats.iterations;
+        }
+        if (!reached && stale_lu) { // refactorise now and finish from the current iterate
+          im.factorize_lu();
+          stats.setup_seconds += im.lu_factor_seconds;
+          problem->setProblem();
+          auto params = Teuchos::rcp(new Teuchos::ParameterList);
+          params->set("Convergence Tolerance", o.tolerance);
+          params->set("Maximum Iterations", o.max_iterations);
+          params->set("Num Blocks", std::min(o.restart, o.max_iterations));
+          params->set("Implicit Residual Scaling", "Norm of RHS");
+          params->set("Explicit Residual Scaling", "Norm of RHS");
+          Belos::PseudoBlockGmresSolMgr<double, MultiVector, Operator> solver(problem, params);
+          reached = solver.solve() == Belos::Converged;
+          stats.iterations += solver.getNumIters();
+          im.lu_iterations += solver.getNumIters();
+        }
       }
     }
   } catch (const Error&) {

@@ -16,12 +16,14 @@ class SparseMatrix;
 /// same keys for the YAML layer.
 struct LinearSolverOptions {
   std::string method = "cg";            ///< cg | gmres | direct
-  std::string preconditioner = "muelu"; ///< muelu | ilu | jacobi | none (ignored by direct)
+  std::string preconditioner = "muelu"; ///< muelu | lu | ilu | jacobi | none (not for direct)
   double tolerance = 1e-10;             ///< relative residual ||b - A x|| / ||b|| to reach
   int max_iterations = 2000;            ///< Krylov iterations in all (restarts included)
   int restart = 200;                    ///< GMRES Krylov subspace size before a restart
   int amg_coarse_size = 1000;           ///< MueLu: stop coarsening below this many rows
-  bool verbose = false;                 ///< print Krylov convergence history (rank 0)
+  int lu_refresh = 0;   ///< lu: refactorise after this many GMRES iterations on old factors;
+                        ///< 0 = once the time spent on them reaches one factorisation's
+  bool verbose = false; ///< print Krylov convergence history (rank 0)
 
   /// Options from a validated ParameterSet (keys of LinearSolver::schema()).
   static LinearSolverOptions from_parameters(const ParameterSet& params);
@@ -41,8 +43,11 @@ struct LinearSolveStats {
 /// Preconditioners: MueLu smoothed aggregation ("number of equations" = DOFs per node,
 /// near-null space from set_near_null_space(), symmetric Gauss-Seidel smoothing, W-cycle, KLU2
 /// coarse solve on one rank and per-rank deep-fill ILU on several), Ifpack2 ILU(0) (RILUK, per
-/// rank), Ifpack2 Jacobi. The direct solver's tolerance check is loosened to max(tolerance, 1e-6):
-/// its accuracy is set by conditioning, not iterations.
+/// rank), Ifpack2 Jacobi, and "lu": the KLU2 factors of an earlier matrix (refactorised at
+/// the next setup() once the GMRES time on them has reached the time of one factorisation, or
+/// after `lu_refresh` iterations if given; at once if GMRES reaches that limit within a solve).
+/// The direct solver's tolerance check is loosened to max(tolerance, 1e-6): its accuracy is set
+/// by conditioning, not iterations.
 ///
 /// Usage: setup(A) after each assembly of A, then solve() any number of times. The solver
 /// keeps a reference to A's values, so setup() must follow every refill. Calling setup() again

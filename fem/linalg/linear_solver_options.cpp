@@ -15,6 +15,7 @@ ParameterSet to_parameters(const LinearSolverOptions& o) {
   p.set("max_iterations", static_cast<long>(o.max_iterations));
   p.set("restart", static_cast<long>(o.restart));
   p.set("amg_coarse_size", static_cast<long>(o.amg_coarse_size));
+  p.set("lu_refresh", static_cast<long>(o.lu_refresh));
   p.set("verbose", o.verbose);
   return p;
 }
@@ -28,9 +29,12 @@ ParamSchema LinearSolver::schema() {
                      "otherwise) or a direct sparse LU factorisation (KLU2)")
       .one_of({"cg", "gmres", "direct"})
       .with_default(d.method);
-  s.string("preconditioner", "muelu: smoothed-aggregation algebraic multigrid; ilu: "
-                             "incomplete LU(0) per rank; jacobi: diagonal scaling; none")
-      .one_of({"muelu", "ilu", "jacobi", "none"})
+  s.string("preconditioner",
+           "muelu: smoothed-aggregation algebraic multigrid; lu: the sparse LU (KLU2) of an "
+           "earlier matrix, refactorised as `lu_refresh` says (for Newton iterations that "
+           "change only a few rows, as contact ones do); ilu: incomplete LU(0) per rank; "
+           "jacobi: diagonal scaling; none")
+      .one_of({"muelu", "lu", "ilu", "jacobi", "none"})
       .with_default(d.preconditioner);
   s.real("tolerance", "", "Relative residual ||b - A x|| / ||b|| at which iterations stop")
       .greater_than(0.0)
@@ -46,6 +50,11 @@ ParamSchema LinearSolver::schema() {
                                "level is solved directly")
       .at_least(1)
       .with_default(static_cast<long>(d.amg_coarse_size));
+  s.integer("lu_refresh", "lu: GMRES iterations, in all since the last factorisation, after "
+                          "which the current matrix is factorised; 0 = automatic: once the "
+                          "GMRES time on the old factors equals the time of one factorisation")
+      .at_least(0)
+      .with_default(static_cast<long>(d.lu_refresh));
   s.boolean("verbose", "Print the Krylov convergence history").with_default(d.verbose);
   return s;
 }
@@ -60,6 +69,7 @@ LinearSolverOptions LinearSolverOptions::from_parameters(const ParameterSet& par
   if (params.has("restart")) o.restart = static_cast<int>(params.integer("restart"));
   if (params.has("amg_coarse_size"))
     o.amg_coarse_size = static_cast<int>(params.integer("amg_coarse_size"));
+  if (params.has("lu_refresh")) o.lu_refresh = static_cast<int>(params.integer("lu_refresh"));
   if (params.has("verbose")) o.verbose = params.boolean("verbose");
   return o;
 }
@@ -69,6 +79,10 @@ namespace detail {
 void validate_linear_solver_options(const LinearSolverOptions& options) {
   ParameterSet given = to_parameters(options);
   validate_or_throw(LinearSolver::schema(), given);
+  // Old LU factors are a nonsymmetric preconditioner: CG would break on them.
+  if (options.preconditioner == "lu" && options.method != "gmres")
+    throw InputError("linear_solver: preconditioner 'lu' needs method 'gmres', got method '" +
+                     options.method + "'");
 }
 } // namespace detail
 

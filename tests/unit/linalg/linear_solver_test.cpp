@@ -70,7 +70,8 @@ INSTANTIATE_TEST_SUITE_P(AllCombinations, ChainSolve,
                          ::testing::Values(Combo{"cg", "muelu"}, Combo{"cg", "jacobi"},
                                            Combo{"cg", "ilu"}, Combo{"cg", "none"},
                                            Combo{"gmres", "ilu"}, Combo{"gmres", "muelu"},
-                                           Combo{"gmres", "jacobi"}, Combo{"direct", "none"}),
+                                           Combo{"gmres", "jacobi"}, Combo{"gmres", "lu"},
+                                           Combo{"direct", "none"}),
                          combo_name);
 
 class RefillSolve : public ::testing::TestWithParam<Combo> {};
@@ -99,7 +100,7 @@ TEST_P(RefillSolve, DoublingTheMatrixHalvesTheSolution) {
 INSTANTIATE_TEST_SUITE_P(Reuse, RefillSolve,
                          ::testing::Values(Combo{"cg", "muelu"}, Combo{"cg", "ilu"},
                                            Combo{"cg", "jacobi"}, Combo{"gmres", "muelu"},
-                                           Combo{"direct", "none"}),
+                                           Combo{"gmres", "lu"}, Combo{"direct", "none"}),
                          combo_name);
 
 // Reused MueLu aggregates with genuinely new values must still give the right answer.
@@ -165,6 +166,54 @@ TEST(LinearSolver, MueLuReuseAfterStoredZerosBecomeNonzero) {
   x.set_zero();
   amg.solve(b, x);
   EXPECT_LE(relative_difference(x, xd), 1e-8);
+}
+
+// "lu" keeps the factors of the first matrix: switching the one-way tie on changes one row by
+// a rank-one term, so right-preconditioned GMRES on the old factors converges in two
+// iterations (exact arithmetic; three allowed for rounding) to the new matrix's solution.
+// Uneven element stiffnesses (as in MueLuReuseAfterNewValuesMatchesDirect) stretch the tie: with
+// the mirror-symmetric solution of a uniform chain the old factors would already be exact.
+// cond_2 <= 4.4e3 (one-way tie) x 1.25/0.75: each solve to 1e-12 is within 7.3e-9 of exact.
+TEST(LinearSolver, OldLuFactorsPreconditionTheNewMatrix) {
+  Chain chain;
+  chain.one_way_tie = true;
+  chain.tie_stiffness = 0.0;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  const auto uneven = [](int e) { return 1.0 + 0.25 * std::sin(e); };
+  chain.assemble(A, 1.0, uneven);
+  DistributedVector b(dist), x(dist), xd(dist);
+  chain.assemble_rhs(b);
+  LinearSolver lu(options({"gmres", "lu"}));
+  lu.setup(A);
+  EXPECT_EQ(lu.solve(b, x).iterations, 1); // fresh factors: GMRES is done in one step
+  chain.tie_stiffness = 100.0;
+  chain.assemble(A, 1.0, uneven);
+  lu.setup(A); // too little time spent on the old factors yet: no refactorisation
+  x.set_zero();
+  const int stale = lu.solve(b, x).iterations;
+  EXPECT_GE(stale, 2);
+  EXPECT_LE(stale, 3);
+  LinearSolver direct(options({"direct", "none"}));
+  direct.setup(A);
+  direct.solve(b, xd);
+  EXPECT_LE(relative_difference(x, xd), 2e-8);
+
+  // lu_refresh 2 counts every iteration since the factorisation: the first solve used one, so
+  // the old factors get one more, then the solve refactorises and finishes in one.
+  LinearSolverOptions o = options({"gmres", "lu"});
+  o.lu_refresh = 2;
+  LinearSolver capped(o);
+  chain.tie_stiffness = 0.0;
+  chain.assemble(A, 1.0, uneven);
+  capped.setup(A);
+  capped.solve(b, x);
+  chain.tie_stiffness = 100.0;
+  chain.assemble(A, 1.0, uneven);
+  capped.setup(A);
+  x.set_zero();
+  EXPECT_EQ(capped.solve(b, x).iterations, 2);
+  EXPECT_LE(relative_difference(x, xd), 2e-8);
 }
 
 // Plane-strain block, 408 DOFs. Its condition number, computed once with a dense eigensolver,
@@ -382,6 +431,15 @@ TEST(LinearSolverOptions, InvalidOptionsAreAllReported) {
   o = LinearSolverOptions{};
   o.preconditioner = "amg";
   EXPECT_THROW(LinearSolver{o}, InputError);
+  o.preconditioner = "lu"; // with the default method, cg
+  try {
+    LinearSolver solver(o);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("preconditioner 'lu' needs method 'gmres'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
@@ -389,7 +447,7 @@ TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   EXPECT_EQ(schema.name(), "linear_solver");
   EXPECT_EQ(schema.keys(),
             (std::vector<std::string>{"method", "preconditioner", "tolerance", "max_iterations",
-                                      "restart", "amg_coarse_size", "verbose"}));
+                                      "restart", "amg_coarse_size", "lu_refresh", "verbose"}));
   ParameterSet given;
   given.set("method", std::string("gmres"));
   given.set("max_iterations", 7L);
@@ -402,6 +460,7 @@ TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   EXPECT_EQ(o.tolerance, d.tolerance);
   EXPECT_EQ(o.restart, d.restart);
   EXPECT_EQ(o.amg_coarse_size, d.amg_coarse_size);
+  EXPECT_EQ(o.lu_refresh, d.lu_refresh);
   EXPECT_EQ(o.verbose, d.verbose);
 }
 
