@@ -35,14 +35,15 @@ def run(app, path, workdir):
         sys.exit(f"{path}: exit {out.returncode}\n{out.stdout}\n{out.stderr}")
     text = out.stdout
     m = re.search(r"(\d+) DOFs", text)
-    s = re.search(r"(\d+) increments, (\d+) linear solves, (\d+) matrix set-ups; time ([\d.]+) s"
+    s = re.search(r"(\d+) increments, (\d+) linear solves \((\d+) Krylov iterations\), "
+                  r"(\d+) matrix set-ups; time ([\d.]+) s"
                   r" = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+).*peak memory "
                   r"([\d.]+) MB", text)
     peak = re.search(r"peak pull-out force ([\d.]+) kN at ([\d.]+) mm", text)
     return {"dofs": int(m.group(1)) if m else 0, "increments": int(s.group(1)),
-            "solves": int(s.group(2)), "setups": int(s.group(3)), "seconds": float(s.group(4)),
-            "assembly": float(s.group(5)), "setup": float(s.group(6)),
-            "solve": float(s.group(7)), "memory": float(s.group(8)),
+            "solves": int(s.group(2)), "krylov": int(s.group(3)), "setups": int(s.group(4)),
+            "seconds": float(s.group(5)), "assembly": float(s.group(6)),
+            "setup": float(s.group(7)), "solve": float(s.group(8)), "memory": float(s.group(9)),
             "peak": float(peak.group(1))}
 
 
@@ -100,9 +101,9 @@ def main():
         times = ", ".join("%.1f" % r["seconds"] for r in runs)
         print(f"(times of the {a.repeat} runs: {times} s)\n", flush=True)
     rows = []
-    print("| k | DOFs | increments | linear solves | wall time | set-up | solve | memory | "
-          "peak force | exponent vs previous |")
-    print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
+    print("| k | DOFs | increments | linear solves | Krylov iterations | wall time | assembly | "
+          "set-up | solve | memory | peak force | exponent vs previous |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|", flush=True)
     for k in [int(x) for x in a.factors.split(",")]:
         path = os.path.join(work, f"pile_k{k}.yaml")
         with open(path, "w") as f:
@@ -113,7 +114,8 @@ def main():
             q = rows[-1]
             expo = f"{math.log(r['seconds'] / q['seconds']) / math.log(r['dofs'] / q['dofs']):.2f}"
         rows.append(r)
-        print(f"| {k} | {r['dofs']} | {r['increments']} | {r['solves']} | {r['seconds']:.1f} s | "
+        print(f"| {k} | {r['dofs']} | {r['increments']} | {r['solves']} | {r['krylov']} | "
+              f"{r['seconds']:.1f} s | {r['assembly']:.1f} s | "
               f"{r['setup']:.1f} s | {r['solve']:.1f} s | {r['memory']:.0f} MB | "
               f"{r['peak']:.1f} kN | {expo} |", flush=True)
     if len(rows) > 1:

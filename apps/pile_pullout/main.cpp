@@ -97,10 +97,11 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
   std::printf("pile_pullout: peak pull-out force %.2f kN at %.3f mm; final %.2f kN at %.3f mm\n",
               results.peak_force(), 1e3 * results.peak_displacement(), results.last().force,
               1e3 * results.last().displacement);
-  std::printf("pile_pullout: %d increments, %d linear solves, %d matrix set-ups; time %.2f s = "
-              "assembly %.2f + set-up %.2f + solve %.2f + output %.2f + other; peak memory "
-              "%.1f MB per rank\n",
-              summary.steps, summary.linear_solves, summary.matrix_setups, summary.seconds,
+  std::printf("pile_pullout: %d increments, %d linear solves (%ld Krylov iterations), %d matrix "
+              "set-ups; time %.2f s = assembly %.2f + set-up %.2f + solve %.2f + output %.2f + "
+              "other; peak memory %.1f MB per rank\n",
+              summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
+              summary.matrix_setups, summary.seconds,
               summary.assembly_seconds, summary.setup_seconds, summary.solve_seconds,
               summary.output_seconds, peak_mb);
   if (plots) plot(writer.directory(), spec.name);

@@ -92,8 +92,8 @@ struct LinearSolver::Impl {
   Teuchos::RCP<detail::LuPreconditioner> lu; ///< preconditioner "lu"
   int lu_iterations = 0;                     ///< GMRES iterations on the current lu factors
   double lu_factor_seconds = 0, lu_stale_seconds = 0; ///< last factorisation; GMRES since
-  int lu_stale_iterations = 0;
-  bool lu_current = false; ///< lu factors are of the matrix of the last setup()
+  double lu_iteration_seconds = 0; ///< cost of one GMRES iteration on lu factors (last solve)
+  bool lu_current = false;         ///< lu factors are of the matrix of the last setup()
   Teuchos::RCP<detail::Vector> b_work, x_work, r_work;
   double setup_seconds = 0;
 
@@ -104,15 +104,16 @@ struct LinearSolver::Impl {
     lu->factorize(A);
     lu_factor_seconds = seconds_since(t0);
     lu_stale_seconds = 0;
-    lu_stale_iterations = lu_iterations = 0;
+    lu_iterations = 0;
     lu_current = true;
   }
   /// GMRES iterations a solve on old factors may take before refactorising is cheaper.
   int stale_lu_limit(const LinearSolverOptions& o) const {
     if (o.lu_refresh > 0) return std::max(1, o.lu_refresh - lu_iterations);
-    if (lu_stale_iterations == 0) return o.max_iterations; // no cost per iteration known yet
-    const double per_iteration = lu_stale_seconds / lu_stale_iterations;
-    return std::max(1, static_cast<int>((lu_factor_seconds - lu_stale_seconds) / per_iteration));
+    // Every solve on lu factors measured its cost per iteration; the first stale solve comes
+    // after at least one fresh one (setup() factorises first), so the estimate exists.
+    const double budget = (lu_factor_seconds - lu_stale_seconds) / lu_iteration_seconds;
+    return std::max(1, static_cast<int>(std::min<double>(budget, o.max_iterations)));
   }
 };
 
@@ -368,10 +369,9 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
       }
       if (o.preconditioner == "lu") {
         im.lu_iterations += stats.iterations;
-        if (stale_lu) {
-          im.lu_stale_seconds += seconds_since(start);
-          im.lu_stale_iterations += stats.iterations;
-        }
+        const double krylov_seconds = seconds_since(start);
+        im.lu_iteration_seconds = krylov_seconds / std::max(1, stats.iterations);
+        if (stale_lu) im.lu_stale_seconds += krylov_seconds;
         if (!reached && stale_lu) { // refactorise now and finish from the current iterate
           im.factorize_lu();
           stats.setup_seconds += im.lu_factor_seconds;
