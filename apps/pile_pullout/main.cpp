@@ -101,9 +101,8 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
               "set-ups; time %.2f s = assembly %.2f + set-up %.2f + solve %.2f + output %.2f + "
               "other; peak memory %.1f MB per rank\n",
               summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
-              summary.matrix_setups, summary.seconds,
-              summary.assembly_seconds, summary.setup_seconds, summary.solve_seconds,
-              summary.output_seconds, peak_mb);
+              summary.matrix_setups, summary.seconds, summary.assembly_seconds,
+              summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
   if (plots) plot(writer.directory(), spec.name);
   // List what is there: a bonded shaft has no profiles to plot.
   std::string files = "head_force.csv, profiles.csv";
