@@ -1,4 +1,5 @@
 // The docs' parameter tables are the schemas' own output: they cannot drift from the code.
+#include "contact/solver/contact_solver_options.hpp"
 #include "fem/linalg/linear_solver.hpp"
 #include "materials/material_registry.hpp"
 
@@ -27,6 +28,11 @@ TEST(DocsTablesMatchSchemas, InputReference) {
   }
   EXPECT_NE(doc.find(LinearSolver::schema().markdown_table()), std::string::npos)
       << "docs/input_reference.md: paste `bipot describe --markdown linear_solver`";
+  for (const auto& name : contact::contact_solvers().names()) {
+    EXPECT_NE(doc.find("### `" + name + "`"), std::string::npos) << name;
+    EXPECT_NE(doc.find(contact::contact_solvers().schema(name).markdown_table()), std::string::npos)
+        << "docs/input_reference.md: paste `bipot describe --markdown " << name << "`";
+  }
 }
 
 } // namespace
