@@ -110,10 +110,11 @@ int run_command(const std::vector<std::string>& args) {
                 << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
     const RunSummary summary = analysis.run([&](const StepReport& r) {
       if (!root() || quiet) return;
-      std::printf("  stage %-12s step %3d/%-3d  t = %-9.4g  newton %2d  linear %4d  "
+      // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+      std::printf("  stage %-12s step %3d %4.0f%%  t = %-9.4g  newton %2d  linear %4d  "
                   "residual %.2e  %.2f s\n",
-                  r.stage.c_str(), r.step, r.steps, r.time, r.iterations, r.linear_iterations,
-                  r.residual, r.seconds);
+                  r.stage.c_str(), r.step, 100.0 * r.load_factor, r.time, r.iterations,
+                  r.linear_iterations, r.residual, r.seconds);
       std::fflush(stdout);
     });
     const double peak_mb = max_all(peak_memory_mb());

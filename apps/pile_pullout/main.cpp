@@ -80,10 +80,12 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
       results.record(r, analysis);
       if (!root || quiet) return;
       const auto h = results.last();
-      std::printf("  %-12s step %3d/%-3d  head %8.3f mm  force %9.2f kN  newton %3d%s  "
+      // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+      std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d%s  "
                   "%.2f s%s\n",
-                  r.stage.c_str(), r.step, r.steps, 1e3 * h.displacement, h.force, r.iterations,
-                  r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "", r.seconds,
+                  r.stage.c_str(), r.step, 100.0 * r.load_factor, 1e3 * h.displacement, h.force,
+                  r.iterations, r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "",
+                  r.seconds,
                   r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
       std::fflush(stdout);
     });
