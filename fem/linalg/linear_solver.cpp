@@ -341,32 +341,35 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
       // A Krylov run can stop short of the tolerance with iterations to spare when its
       // recursive residual drifts from the true one (GMRES "loss of accuracy"): restarting
       // from the current iterate recomputes the true residual. Two restarts at most.
-      for (int attempt = 0; attempt < 3 && !reached && stats.iterations < limit; ++attempt) {
-        problem->setProblem(); // takes the current x as initial guess
-        auto params = Teuchos::rcp(new Teuchos::ParameterList);
-        params->set("Convergence Tolerance", o.tolerance);
-        params->set("Maximum Iterations", limit - stats.iterations);
-        params->set("Implicit Residual Scaling", "Norm of RHS");
-        params->set("Verbosity", o.verbose ? Belos::Errors + Belos::Warnings +
-                                                 Belos::StatusTestDetails + Belos::FinalSummary
-                                           : Belos::Errors);
-        if (o.verbose) params->set("Output Frequency", 10);
-        Belos::ReturnType result;
-        if (o.method == "cg") {
-          Belos::PseudoBlockCGSolMgr<double, MultiVector, Operator> solver(problem, params);
-          result = solver.solve();
-          stats.iterations += solver.getNumIters();
-        } else {
-          const int remaining = limit - stats.iterations;
-          params->set("Explicit Residual Scaling", "Norm of RHS");
-          params->set("Num Blocks", std::min(o.restart, remaining));
-          params->set("Maximum Restarts", remaining / o.restart + 1);
-          Belos::PseudoBlockGmresSolMgr<double, MultiVector, Operator> solver(problem, params);
-          result = solver.solve();
-          stats.iterations += solver.getNumIters();
+      auto krylov = [&](int limit) {
+        for (int attempt = 0; attempt < 3 && !reached && stats.iterations < limit; ++attempt) {
+          problem->setProblem(); // takes the current x as initial guess
+          auto params = Teuchos::rcp(new Teuchos::ParameterList);
+          params->set("Convergence Tolerance", o.tolerance);
+          params->set("Maximum Iterations", limit - stats.iterations);
+          params->set("Implicit Residual Scaling", "Norm of RHS");
+          params->set("Verbosity", o.verbose ? Belos::Errors + Belos::Warnings +
+                                                   Belos::StatusTestDetails + Belos::FinalSummary
+                                             : Belos::Errors);
+          if (o.verbose) params->set("Output Frequency", 10);
+          Belos::ReturnType result;
+          if (o.method == "cg") {
+            Belos::PseudoBlockCGSolMgr<double, MultiVector, Operator> solver(problem, params);
+            result = solver.solve();
+            stats.iterations += solver.getNumIters();
+          } else {
+            const int remaining = limit - stats.iterations;
+            params->set("Explicit Residual Scaling", "Norm of RHS");
+            params->set("Num Blocks", std::min(o.restart, remaining));
+            params->set("Maximum Restarts", remaining / o.restart + 1);
+            Belos::PseudoBlockGmresSolMgr<double, MultiVector, Operator> solver(problem, params);
+            result = solver.solve();
+            stats.iterations += solver.getNumIters();
+          }
+          reached = result == Belos::Converged;
         }
-        reached = result == Belos::Converged;
-      }
+      };
+      krylov(limit);
       if (o.preconditioner == "lu") {
         im.lu_iterations += stats.iterations;
         const double krylov_seconds = seconds_since(start);
@@ -375,17 +378,9 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
         if (!reached && stale_lu) { // refactorise now and finish from the current iterate
           im.factorize_lu();
           stats.setup_seconds += im.lu_factor_seconds;
-          problem->setProblem();
-          auto params = Teuchos::rcp(new Teuchos::ParameterList);
-          params->set("Convergence Tolerance", o.tolerance);
-          params->set("Maximum Iterations", o.max_iterations);
-          params->set("Num Blocks", std::min(o.restart, o.max_iterations));
-          params->set("Implicit Residual Scaling", "Norm of RHS");
-          params->set("Explicit Residual Scaling", "Norm of RHS");
-          Belos::PseudoBlockGmresSolMgr<double, MultiVector, Operator> solver(problem, params);
-          reached = solver.solve() == Belos::Converged;
-          stats.iterations += solver.getNumIters();
-          im.lu_iterations += solver.getNumIters();
+          const int before = stats.iterations;
+          krylov(before + o.max_iterations);
+          im.lu_iterations += stats.iterations - before;
         }
       }
     }
