@@ -112,8 +112,11 @@ struct LinearSolver::Impl {
     if (o.lu_refresh > 0) return std::max(1, o.lu_refresh - lu_iterations);
     // Every solve on lu factors measured its cost per iteration; the first stale solve comes
     // after at least one fresh one (setup() factorises first), so the estimate exists.
-    const double budget = (lu_factor_seconds - lu_stale_seconds) / lu_iteration_seconds;
-    return std::max(1, static_cast<int>(std::min<double>(budget, o.max_iterations)));
+    const double left = std::max(0.0, lu_factor_seconds - lu_stale_seconds);
+    // A solve faster than the clock's resolution: no limit from time.
+    if (!(lu_iteration_seconds > 0)) return o.max_iterations;
+    const double budget = std::min<double>(left / lu_iteration_seconds, o.max_iterations);
+    return std::max(1, static_cast<int>(budget));
   }
 };
 
