@@ -7,6 +7,9 @@ Markdown table of medians: assembly, preconditioner set-up, solve, iterations, t
 peak memory per DOF, and the np=2 speed-up. Timings come from the summary bipot prints.
 
 Usage: bench/elasticity.py [--bipot build/apps/bipot/bipot] [--repeat 3] [--sizes 70,223,706]
+                           [--ranks 1,2] [--linear-solver "{method: direct, factorization: klu2}"]
+--linear-solver replaces the `linear_solver:` value (a YAML flow map), e.g. to time the sparse
+LU packages: with `method: direct` the set-up column is the factorisation.
 """
 import argparse
 import os
@@ -44,10 +47,14 @@ SUMMARY = re.compile(
 DOFS = re.compile(r"(\d+) DOFs on")
 
 
-def run_case(bipot, n, ranks, workdir):
+def run_case(bipot, n, ranks, workdir, linear_solver=None):
     path = os.path.join(workdir, f"bench_{n}.yaml")
+    text = INPUT.format(n=n, out=os.path.join(workdir, f"out_{n}_{ranks}"))
+    if linear_solver:
+        text = re.sub(r"^linear_solver:.*$", lambda m: f"linear_solver: {linear_solver}", text,
+                      flags=re.M)
     with open(path, "w") as f:
-        f.write(INPUT.format(n=n, out=os.path.join(workdir, f"out_{n}_{ranks}")))
+        f.write(text)
     cmd = [bipot, "run", path]
     if ranks > 1:
         cmd = ["mpiexec", "-n", str(ranks), "--allow-run-as-root", "--oversubscribe"] + cmd
@@ -71,6 +78,8 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--sizes", default="70,223,706", help="cells per side (DOFs = 2 (n+1)^2)")
     ap.add_argument("--ranks", default="1,2")
+    ap.add_argument("--linear-solver", default=None,
+                    help="YAML flow map replacing the input's linear_solver value")
     args = ap.parse_args()
     sizes = [int(s) for s in args.sizes.split(",")]
     ranks = [int(r) for r in args.ranks.split(",")]
@@ -78,7 +87,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         for n in sizes:
             for np_ in ranks:
-                runs = [run_case(args.bipot, n, np_, work) for _ in range(args.repeat)]
+                runs = [run_case(args.bipot, n, np_, work, args.linear_solver)
+                        for _ in range(args.repeat)]
                 results[(n, np_)] = {k: median_of(runs, k) for k in runs[0]}
                 r = results[(n, np_)]
                 print(f"# n={n} np={np_}: {r}", file=sys.stderr, flush=True)

@@ -12,7 +12,7 @@ jobs="${JOBS:-$(nproc)}"
 # config file. Its exported targets reference scotch/ptscotch, VTK's reference libXi/libXxf86vm.
 packages=(
   build-essential cmake pkg-config
-  trilinos-all-dev libptscotch-dev libscotch-dev
+  trilinos-all-dev libptscotch-dev libscotch-dev libmumps-dev
   libeigen3-dev libyaml-cpp-dev libvtk9-dev libxi-dev libxxf86vm-dev
   libgmsh-dev gmsh
   openmpi-bin libopenmpi-dev

@@ -21,6 +21,7 @@ struct LinearSolverOptions {
   int max_iterations = 2000;            ///< Krylov iterations in all (restarts included)
   int restart = 200;                    ///< GMRES Krylov subspace size before a restart
   int amg_coarse_size = 1000;           ///< MueLu: stop coarsening below this many rows
+  std::string factorization = "mumps";  ///< direct and lu: mumps | klu2 (sparse LU package)
   int lu_refresh = 0;   ///< lu: refactorise after this many GMRES iterations on old factors;
                         ///< 0 = once the time spent on them reaches one factorisation's
   bool verbose = false; ///< print Krylov convergence history (rank 0)
@@ -39,11 +40,12 @@ struct LinearSolveStats {
 };
 
 /// Solves A x = b for a SparseMatrix A with Belos "Pseudo Block CG" / "Pseudo Block GMRES"
-/// (right preconditioning for GMRES) or Amesos2 KLU2 (the matrix gathered on rank 0).
+/// (right preconditioning for GMRES) or a sparse LU, MUMPS or Amesos2 KLU2 (the matrix
+/// gathered on rank 0).
 /// Preconditioners: MueLu smoothed aggregation ("number of equations" = DOFs per node,
 /// near-null space from set_near_null_space(), symmetric Gauss-Seidel smoothing, W-cycle, KLU2
 /// coarse solve on one rank and per-rank deep-fill ILU on several), Ifpack2 ILU(0) (RILUK, per
-/// rank), Ifpack2 Jacobi, and "lu": the KLU2 factors of an earlier matrix (refactorised at
+/// rank), Ifpack2 Jacobi, and "lu": the LU factors of an earlier matrix (refactorised at
 /// the next setup() once the GMRES time on them has reached the time of one factorisation, or
 /// after `lu_refresh` iterations if given; at once if GMRES reaches that limit within a solve).
 /// The direct solver's tolerance check is loosened to max(tolerance, 1e-6): its accuracy is set
@@ -51,8 +53,8 @@ struct LinearSolveStats {
 ///
 /// Usage: setup(A) after each assembly of A, then solve() any number of times. The solver
 /// keeps a reference to A's values, so setup() must follow every refill. Calling setup() again
-/// after refilling the same matrix reuses MueLu's aggregates and tentative prolongator, and KLU2's
-/// symbolic factorisation; MueLu is rebuilt from scratch instead if an entry stored as 0.0 at
+/// after refilling the same matrix reuses MueLu's aggregates and tentative prolongator, and the
+/// LU's symbolic analysis; MueLu is rebuilt from scratch instead if an entry stored as 0.0 at
 /// its last build has become nonzero (a contact or friction coupling switching on), which its
 /// reused matrix products cannot take.
 class LinearSolver {

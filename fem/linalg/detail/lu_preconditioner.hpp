@@ -6,13 +6,16 @@
 
 namespace bipot::detail {
 
-/// Applies A_old⁻¹ (KLU2 factors of the matrix given to the last factorize()) as a Tpetra
+/// Applies A_old⁻¹ (the LU factors of the matrix given to the last factorize()) as a Tpetra
 /// Operator. Contact Newton iterations change only the interface rows of the tangent, so A
 /// differs from A_old by a low-rank term and right-preconditioned GMRES converges in about
 /// as many iterations as that rank, instead of a new factorisation per iteration (whose cost
 /// grows like N^1.5 on our 2D meshes). The caller decides when to refactorise.
 class LuPreconditioner : public Operator {
 public:
+  /// `package`: the sparse LU to use, "mumps" or "klu2".
+  explicit LuPreconditioner(const std::string& package) : lu_(package) {}
+
   /// Factorises A (collective) and takes its row map as domain and range.
   void factorize(const Teuchos::RCP<CrsMatrix>& A);
   bool factorized() const { return !map_.is_null(); }

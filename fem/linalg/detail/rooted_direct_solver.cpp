@@ -2,9 +2,7 @@
 
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
-
-#include <Amesos2.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
+#include "fem/linalg/detail/root_factorization.hpp"
 
 #include <mpi.h>
 
@@ -36,7 +34,8 @@ std::vector<T> gather_to_root(const std::vector<T>& local, MPI_Datatype type, in
 
 // Runs `work` on rank 0 and makes its failure, if any, a SolverError on every rank, so that
 // no rank is left waiting in a collective.
-template <class Work> void on_root(int rank, const char* stage, Work&& work) {
+template <class Work>
+void on_root(int rank, const std::string& package, const char* stage, Work&& work) {
   std::string failure;
   if (rank == 0) {
     try {
@@ -48,23 +47,20 @@ template <class Work> void on_root(int rank, const char* stage, Work&& work) {
   }
   broadcast(failure, 0);
   if (!failure.empty())
-    throw SolverError(std::string("direct solver (KLU2) ") + stage + " failed: " + failure);
+    throw SolverError("direct solver (" + package + ") " + stage + " failed: " + failure);
 }
 
 } // namespace
 
 struct RootedDirectSolver::Impl {
-  using Solver = Amesos2::Solver<CrsMatrix, MultiVector>;
+  std::string package;
   int rank = mpi_rank();
   int size = mpi_size();
   Teuchos::RCP<CrsMatrix> source; ///< the distributed matrix whose structure we hold
   std::vector<int> owned_counts;  ///< owned rows per rank (rank 0), for b and x
-  // Rank 0 only: the gathered matrix on a one-process communicator.
-  std::vector<GO> row_cols;         ///< column of each gathered entry, rows in global order
-  std::vector<std::size_t> row_ptr; ///< gathered CSR offsets
-  Teuchos::RCP<CrsMatrix> root_matrix;
-  Teuchos::RCP<MultiVector> root_x, root_b;
-  Teuchos::RCP<Solver> solver;
+  // Rank 0 only: the gathered structure and its factorisation.
+  RootCsr structure;
+  std::unique_ptr<RootFactorization> lu;
 
   void gather_structure(const CrsMatrix& A);
   std::vector<double> gather_values(const CrsMatrix& A) const;
@@ -83,24 +79,14 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
   owned_counts.assign(size, 0);
   MPI_Gather(&n_owned, 1, MPI_INT, owned_counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   const auto all_sizes = gather_to_root(sizes, MPI_INT64_T, rank, size);
-  row_cols = gather_to_root(cols, MPI_INT64_T, rank, size);
-  on_root(rank, "setup", [&] {
-    const GO n = static_cast<GO>(all_sizes.size());
-    row_ptr.assign(all_sizes.size() + 1, 0);
+  auto all_cols = gather_to_root(cols, MPI_INT64_T, rank, size);
+  on_root(rank, package, "analysis", [&] {
+    structure.cols.assign(all_cols.begin(), all_cols.end());
+    structure.row_ptr.assign(all_sizes.size() + 1, 0);
     for (std::size_t r = 0; r < all_sizes.size(); ++r)
-      row_ptr[r + 1] = row_ptr[r] + all_sizes[r];
-    auto self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-    auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), GO(0), self));
-    std::vector<std::size_t> counts(all_sizes.begin(), all_sizes.end());
-    auto graph = Teuchos::rcp(
-        new CrsGraph(map, Teuchos::ArrayView<const std::size_t>(counts.data(), counts.size()),
-                     Tpetra::StaticProfile));
-    for (GO r = 0; r < n; ++r)
-      graph->insertGlobalIndices(r, static_cast<int>(all_sizes[r]), row_cols.data() + row_ptr[r]);
-    graph->fillComplete();
-    root_matrix = Teuchos::rcp(new CrsMatrix(graph));
-    root_x = Teuchos::rcp(new MultiVector(map, 1));
-    root_b = Teuchos::rcp(new MultiVector(map, 1));
+      structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
+    lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization();
+    lu->analyse(structure);
   });
 }
 
@@ -110,34 +96,20 @@ std::vector<double> RootedDirectSolver::Impl::gather_values(const CrsMatrix& A) 
   return gather_to_root(values, MPI_DOUBLE, rank, size);
 }
 
-RootedDirectSolver::RootedDirectSolver() : impl_(std::make_unique<Impl>()) {}
+RootedDirectSolver::RootedDirectSolver(std::string package) : impl_(std::make_unique<Impl>()) {
+  impl_->package = std::move(package);
+}
 RootedDirectSolver::~RootedDirectSolver() = default;
 
 void RootedDirectSolver::factorize(const Teuchos::RCP<CrsMatrix>& A) {
   auto& im = *impl_;
-  const bool same_structure = im.source.get() == A.get();
-  if (!same_structure) {
-    im.solver = Teuchos::null;
+  if (im.source.get() != A.get()) {
+    im.source = Teuchos::null; // not reusable if the analysis throws
     im.gather_structure(*A);
     im.source = A;
   }
   const auto values = im.gather_values(*A);
-  on_root(im.rank, "factorisation", [&] {
-    auto& M = *im.root_matrix;
-    if (M.isFillComplete()) M.resumeFill();
-    const GO n = static_cast<GO>(im.row_ptr.size()) - 1;
-    for (GO r = 0; r < n; ++r) {
-      const auto begin = im.row_ptr[r];
-      const int count = static_cast<int>(im.row_ptr[r + 1] - begin);
-      M.replaceGlobalValues(r, count, values.data() + begin, im.row_cols.data() + begin);
-    }
-    M.fillComplete();
-    if (im.solver.is_null()) {
-      im.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", im.root_matrix);
-      im.solver->symbolicFactorization();
-    }
-    im.solver->numericFactorization();
-  });
+  on_root(im.rank, im.package, "factorisation", [&] { im.lu->factorize(values); });
 }
 
 void RootedDirectSolver::solve(const double* b_owned, double* x_owned) {
@@ -146,20 +118,12 @@ void RootedDirectSolver::solve(const double* b_owned, double* x_owned) {
   const auto displs = displacements(im.owned_counts);
   std::vector<double> b_all, x_all;
   if (im.rank == 0) {
-    b_all.resize(im.root_b->getLocalLength());
+    b_all.resize(im.structure.size());
     x_all.resize(b_all.size());
   }
   MPI_Gatherv(b_owned, n_owned, MPI_DOUBLE, b_all.data(), im.owned_counts.data(), displs.data(),
               MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  on_root(im.rank, "solve", [&] {
-    { // host views released before Amesos2 touches the vectors
-      auto b = im.root_b->getDataNonConst(0);
-      std::copy(b_all.begin(), b_all.end(), b.getRawPtr());
-    }
-    im.solver->solve(im.root_x.ptr(), im.root_b.ptr());
-    auto x = im.root_x->getData(0);
-    std::copy(x.getRawPtr(), x.getRawPtr() + x_all.size(), x_all.begin());
-  });
+  on_root(im.rank, im.package, "solve", [&] { im.lu->solve(b_all.data(), x_all.data()); });
   MPI_Scatterv(x_all.data(), im.owned_counts.data(), displs.data(), MPI_DOUBLE, x_owned, n_owned,
                MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }

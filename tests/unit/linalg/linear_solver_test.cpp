@@ -27,15 +27,19 @@ using test::relative_error;
 struct Combo {
   const char* method;
   const char* preconditioner;
+  const char* factorization = "mumps"; // for direct and lu
 };
 std::string combo_name(const ::testing::TestParamInfo<Combo>& info) {
-  return std::string(info.param.method) + "_" + info.param.preconditioner;
+  const std::string lu = info.param.factorization;
+  return std::string(info.param.method) + "_" + info.param.preconditioner +
+         (lu == "mumps" ? "" : "_" + lu);
 }
 
 LinearSolverOptions options(const Combo& c, double tolerance = 1e-12) {
   LinearSolverOptions o;
   o.method = c.method;
   o.preconditioner = c.preconditioner;
+  o.factorization = c.factorization;
   o.tolerance = tolerance;
   o.amg_coarse_size = 10; // small problems: force a real multigrid hierarchy
   return o;
@@ -55,7 +59,7 @@ TEST_P(ChainSolve, MatchesTheClosedFormNodalValues) {
   const auto stats = solver.solve(b, x);
   EXPECT_TRUE(stats.converged);
   const bool direct = std::string(GetParam().method) == "direct";
-  // Direct: KLU2 is backward stable, error ~ cond * 1e-16 ~ 1e-12 at worst.
+  // Direct: MUMPS and KLU2 are backward stable, error ~ cond * 1e-16 ~ 1e-12 at worst.
   EXPECT_LE(relative_error(x, [&](Index i) { return chain.exact(i); }), direct ? 1e-12 : 1e-8);
   // The reported residual is the explicit one; Krylov methods stop on their recursive
   // residual at 1e-12, which may drift from the explicit one by a small factor.
@@ -71,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(AllCombinations, ChainSolve,
                                            Combo{"cg", "ilu"}, Combo{"cg", "none"},
                                            Combo{"gmres", "ilu"}, Combo{"gmres", "muelu"},
                                            Combo{"gmres", "jacobi"}, Combo{"gmres", "lu"},
-                                           Combo{"direct", "none"}),
+                                           Combo{"gmres", "lu", "klu2"}, Combo{"direct", "none"},
+                                           Combo{"direct", "none", "klu2"}),
                          combo_name);
 
 class RefillSolve : public ::testing::TestWithParam<Combo> {};
@@ -100,12 +105,14 @@ TEST_P(RefillSolve, DoublingTheMatrixHalvesTheSolution) {
 INSTANTIATE_TEST_SUITE_P(Reuse, RefillSolve,
                          ::testing::Values(Combo{"cg", "muelu"}, Combo{"cg", "ilu"},
                                            Combo{"cg", "jacobi"}, Combo{"gmres", "muelu"},
-                                           Combo{"gmres", "lu"}, Combo{"direct", "none"}),
+                                           Combo{"gmres", "lu"}, Combo{"gmres", "lu", "klu2"},
+                                           Combo{"direct", "none"},
+                                           Combo{"direct", "none", "klu2"}),
                          combo_name);
 
 // Reused MueLu aggregates with genuinely new values must still give the right answer.
 // Element stiffness in [0.75, 1.25] / h: cond <= 6.1e3 * 1.25 / 0.75 ~ 1.0e4, so the CG
-// solution (residual 1e-12) and KLU2's are each within 1e-8 of exact: 2e-8 apart at most.
+// solution (residual 1e-12) and the direct one are each within 1e-8 of exact: 2e-8 apart at most.
 TEST(LinearSolver, MueLuReuseAfterNewValuesMatchesDirect) {
   const Chain chain;
   const auto dist = chain.distribution();
@@ -132,7 +139,8 @@ TEST(LinearSolver, MueLuReuseAfterNewValuesMatchesDirect) {
 // the pile pull-out. Here the first setup sees the tie's entries as stored zeros, the second
 // the nonsymmetric one-way tie. The tie is unstretched by the mirror-symmetric exact solution,
 // which therefore still holds; the one-way-tie matrix has cond_2 = 4.4e3 (dense SVD, computed
-// once), so GMRES at 1e-12 and KLU2 are each within 4.4e-9 of it: 1e-8 allows for rounding.
+// once), so GMRES at 1e-12 and the direct solve are each within 4.4e-9 of it: 1e-8 allows for
+// rounding.
 TEST(LinearSolver, MueLuReuseAfterStoredZerosBecomeNonzero) {
   Chain chain;
   chain.one_way_tie = true;
@@ -217,7 +225,7 @@ TEST(LinearSolver, OldLuFactorsPreconditionTheNewMatrix) {
 }
 
 // Plane-strain block, 408 DOFs. Its condition number, computed once with a dense eigensolver,
-// is 1.6e3 (E = 1, nu = 0.3, unit cells): CG at 1e-12 is within 1.6e-9 of the KLU2 solution,
+// is 1.6e3 (E = 1, nu = 0.3, unit cells): CG at 1e-12 is within 1.6e-9 of the direct solution,
 // itself within ~1e-13 of exact, so 1e-8 holds with margin.
 class BlockSolve : public ::testing::Test {
 protected:
@@ -284,9 +292,10 @@ TEST(TestProblems, RigidModesOfTheElementMatrices) {
 }
 
 // Axisymmetric thick cylinder, 1088 DOFs, condition number 4.3e3 (dense eigensolver, once):
-// CG at 1e-12 is within 4.3e-9 of KLU2. Measured when written: with the axial translation
-// alone as near-null space MueLu-CG takes 35 (1 rank) / 37 (2 ranks) iterations, doubling with
-// each mesh refinement; with the radial translation added, 19 / 21. The bound 28 sits between.
+// CG at 1e-12 is within 4.3e-9 of the direct solution. Measured when written: with the axial
+// translation alone as near-null space MueLu-CG takes 35 (1 rank) / 37 (2 ranks) iterations,
+// doubling with each mesh refinement; with the radial translation added, 19 / 21. The bound 28 sits
+// between.
 TEST(LinearSolver, AxisymmetricNearNullSpaceKeepsMultigridEffective) {
   const Cylinder cylinder;
   const auto dist = cylinder.distribution();
@@ -353,6 +362,54 @@ TEST(LinearSolver, ThreeComponentChainWith3dRigidBodyModes) {
                              return (i % 3 + 1) * s * (1 - s) / 2;
                            }),
             1e-8);
+}
+
+// The two LU packages on a nonsymmetric matrix (the one-way tie, as a friction tangent):
+// cond_2 <= 4.4e3 x 1.25/0.75 ~ 7.3e3, so two backward-stable solutions (relative
+// backward error ~ 1e-16 x growth) are within ~1e-12 of each other; 1e-11 leaves room for
+// pivot growth. The explicit residual is checked too, independently of either package: it is
+// ~ 1e-16 ||A|| ||x|| / ||b|| ~ 1e-16 x 500 x 0.04 / 0.01 = 2e-13 (measured 2.8e-13).
+TEST(LinearSolver, MumpsAndKlu2AgreeOnANonsymmetricMatrix) {
+  Chain chain;
+  chain.one_way_tie = true;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  chain.assemble(A, 1.0, [](int e) { return 1.0 + 0.25 * std::sin(e); });
+  DistributedVector b(dist), xm(dist), xk(dist), r(dist);
+  chain.assemble_rhs(b);
+  LinearSolver mumps(options({"direct", "none", "mumps"}));
+  LinearSolver klu2(options({"direct", "none", "klu2"}));
+  mumps.setup(A);
+  klu2.setup(A);
+  const auto stats = mumps.solve(b, xm);
+  klu2.solve(b, xk);
+  EXPECT_LE(relative_difference(xm, xk), 1e-11);
+  EXPECT_LE(stats.relative_residual, 1e-12);
+  A.multiply(xm, r);
+  r.scale(-1.0);
+  r.axpy(1.0, b);
+  EXPECT_LE(r.norm2() / b.norm2(), 1e-12);
+}
+
+// A singular matrix (all entries zero) must fail on every rank with the package named, not
+// return garbage or leave a rank waiting.
+TEST(LinearSolver, SingularMatrixFailsNamingThePackage) {
+  const Chain chain;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  chain.assemble(A, 0.0);
+  for (const char* package : {"mumps", "klu2"}) {
+    LinearSolver solver(options({"direct", "none", package}));
+    std::string message;
+    try {
+      solver.setup(A);
+    } catch (const SolverError& e) {
+      message = e.what();
+    }
+    EXPECT_NE(message.find(std::string("direct solver (") + package + ") factorisation failed"),
+              std::string::npos)
+        << package << ": " << message;
+  }
 }
 
 TEST(LinearSolver, NonConvergenceThrowsWithIterationsAndResidual) {
@@ -431,6 +488,18 @@ TEST(LinearSolverOptions, InvalidOptionsAreAllReported) {
   o = LinearSolverOptions{};
   o.preconditioner = "amg";
   EXPECT_THROW(LinearSolver{o}, InputError);
+  o = LinearSolverOptions{};
+  o.factorization = "umfpack";
+  try {
+    LinearSolver solver(o);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "linear_solver.factorization: value \"umfpack\" is not one of: mumps, klu2"),
+              std::string::npos)
+        << e.what();
+  }
+  o = LinearSolverOptions{};
   o.preconditioner = "lu"; // with the default method, cg
   try {
     LinearSolver solver(o);
@@ -445,9 +514,9 @@ TEST(LinearSolverOptions, InvalidOptionsAreAllReported) {
 TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   const auto schema = LinearSolver::schema();
   EXPECT_EQ(schema.name(), "linear_solver");
-  EXPECT_EQ(schema.keys(),
-            (std::vector<std::string>{"method", "preconditioner", "tolerance", "max_iterations",
-                                      "restart", "amg_coarse_size", "lu_refresh", "verbose"}));
+  EXPECT_EQ(schema.keys(), (std::vector<std::string>{"method", "preconditioner", "tolerance",
+                                                     "max_iterations", "restart", "amg_coarse_size",
+                                                     "factorization", "lu_refresh", "verbose"}));
   ParameterSet given;
   given.set("method", std::string("gmres"));
   given.set("max_iterations", 7L);
