@@ -10,9 +10,9 @@ jobs="${JOBS:-$(nproc)}"
 
 # trilinos-all-dev rather than the split packages: find_package(Trilinos) needs every package's
 # config file. Its exported targets reference scotch/ptscotch, VTK's reference libXi/libXxf86vm.
-# libopenblas0-serial becomes the system BLAS/LAPACK (Debian alternatives): MUMPS factorises
-# 3.5 times faster with it than with the reference BLAS (306k DOFs); serial, so that MPI
-# ranks do not also start BLAS threads.
+# libopenblas0-serial becomes the system BLAS/LAPACK (Debian alternatives): MUMPS analyses and
+# factorises 2.8 times faster with it than with the reference BLAS at 306k DOFs
+# (docs/performance.md); serial, so that MPI ranks do not also start BLAS threads.
 packages=(
   build-essential cmake pkg-config
   trilinos-all-dev libptscotch-dev libscotch-dev libmumps-dev libopenblas0-serial
