@@ -7,6 +7,7 @@
 #include <mpi.h>
 
 #include <string>
+#include <utility>
 
 namespace bipot::detail {
 
@@ -81,7 +82,7 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
   const auto all_sizes = gather_to_root(sizes, MPI_INT64_T, rank, size);
   auto all_cols = gather_to_root(cols, MPI_INT64_T, rank, size);
   on_root(rank, package, "analysis", [&] {
-    structure.cols.assign(all_cols.begin(), all_cols.end());
+    structure.cols = std::move(all_cols); // the gathered copy can be 100s of MB at 1M DOFs
     structure.row_ptr.assign(all_sizes.size() + 1, 0);
     for (std::size_t r = 0; r < all_sizes.size(); ++r)
       structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
