@@ -1,7 +1,7 @@
 #pragma once
 /// Internal to fem/linalg: sparse LU factorisations of a matrix held whole by one process.
 
-#include <cstdint>
+#include <cstddef>
 #include <memory>
 #include <vector>
 
