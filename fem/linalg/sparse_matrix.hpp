@@ -60,6 +60,7 @@ public:
 
 private:
   friend class LinearSolver;
+  friend class SchurComplementSolver;
   std::unique_ptr<Impl> impl_;
 };
 

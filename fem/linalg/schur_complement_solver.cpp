@@ -1,0 +1,43 @@
+#include "fem/linalg/schur_complement_solver.hpp"
+
+#include "fem/linalg/detail/rooted_direct_solver.hpp"
+#include "fem/linalg/distributed_vector.hpp"
+#include "fem/linalg/sparse_matrix.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace bipot {
+
+struct SchurComplementSolver::Impl {
+  detail::RootedDirectSolver direct{"mumps"};
+};
+
+SchurComplementSolver::SchurComplementSolver() : impl_(std::make_unique<Impl>()) {}
+SchurComplementSolver::~SchurComplementSolver() = default;
+
+void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs) {
+  const auto t0 = std::chrono::steady_clock::now();
+  dofs_ = schur_dofs;
+  std::sort(dofs_.begin(), dofs_.end());
+  const std::vector<long long> vars(dofs_.begin(), dofs_.end());
+  impl_->direct.factorize_with_schur(A.impl_->matrix, vars);
+  const std::vector<double>& s = impl_->direct.schur();
+  const Index m = static_cast<Index>(dofs_.size());
+  // MUMPS returns an unsymmetric Schur complement by rows (ICNTL(19) = 1).
+  schur_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      s.data(), m, m);
+  setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Eigen::VectorXd SchurComplementSolver::reduce(const DistributedVector& b) {
+  const std::vector<double> c = impl_->direct.reduce(b.owned_values());
+  return Eigen::Map<const Eigen::VectorXd>(c.data(), static_cast<Index>(c.size()));
+}
+
+void SchurComplementSolver::expand(const Eigen::VectorXd& x_schur, DistributedVector& x) {
+  impl_->direct.expand(std::vector<double>(x_schur.data(), x_schur.data() + x_schur.size()),
+                       x.owned_values());
+}
+
+} // namespace bipot
