@@ -77,8 +77,7 @@ public:
       const int code = id_.infog[0];
       if (code >= 0 && !schur_vars_.empty() && id_.infog[27] > 0)
         throw std::runtime_error("numerically singular matrix outside the Schur variables (" +
-                                 std::to_string(id_.infog[27]) +
-                                 " null pivots, MUMPS INFOG(28))");
+                                 std::to_string(id_.infog[27]) + " null pivots, MUMPS INFOG(28))");
       if (code >= 0) return;
       if ((code == -8 || code == -9) && attempt < 4) {
         id_.icntl[13] = std::max(40, 2 * id_.icntl[13]); // ICNTL(14): % extra workspace

@@ -12,9 +12,17 @@ namespace {
 }
 } // namespace
 
-void RootFactorization::set_schur_variables(const std::vector<long long>&) { no_schur(); }
-const std::vector<double>& RootFactorization::schur() const { no_schur(); }
-void RootFactorization::reduce(const double*, double*, double*) { no_schur(); }
-void RootFactorization::expand(double*, const double*, double*) { no_schur(); }
+void RootFactorization::set_schur_variables(const std::vector<long long>&) {
+  no_schur();
+}
+const std::vector<double>& RootFactorization::schur() const {
+  no_schur();
+}
+void RootFactorization::reduce(const double*, double*, double*) {
+  no_schur();
+}
+void RootFactorization::expand(double*, const double*, double*) {
+  no_schur();
+}
 
 } // namespace bipot::detail

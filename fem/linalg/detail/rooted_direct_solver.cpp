@@ -136,7 +136,9 @@ void RootedDirectSolver::factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
   MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
-const std::vector<double>& RootedDirectSolver::schur() const { return impl_->schur; }
+const std::vector<double>& RootedDirectSolver::schur() const {
+  return impl_->schur;
+}
 
 std::vector<double> RootedDirectSolver::reduce(const double* b_owned) {
   auto& im = *impl_;

@@ -50,7 +50,9 @@ TEST(SchurComplementSolver, IsTheCoarseChainAndExpandsToTheExactSolution) {
   expected(0, 3) -= chain.tie_stiffness;
   // Entries are O(1/h) = 100; MUMPS' backward error is near machine precision.
   EXPECT_LT((solver.schur() - expected).norm() / expected.norm(), 1e-12)
-      << "S =\n" << solver.schur() << "\nexpected\n" << expected;
+      << "S =\n"
+      << solver.schur() << "\nexpected\n"
+      << expected;
 
   DistributedVector b(dist), x(dist);
   chain.assemble_rhs(b);
