@@ -13,7 +13,7 @@ namespace bipot::contact {
 
 namespace {
 // Local frame as a dim × dim matrix with columns [n, t1 (, t2)].
-Eigen::Matrix3d frame(const InterfacePair& p, int dim) {
+Eigen::Matrix3d pair_frame(const InterfacePair& p, int dim) {
   Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(i, 0) = p.normal[i];
@@ -46,6 +46,7 @@ InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLa
     results_[i].jump = results_[i].r = results_[i].traction = LocalVector::Zero(dim_);
   }
   tangent_.assign(n, LocalMatrix::Zero(dim_, dim_));
+  derivatives_.resize(n);
   offset_.assign(n, LocalVector::Zero(dim_));
   assembled_tangent_ = tangent_;
 }
@@ -104,7 +105,7 @@ LocalVector InterfaceAssembler::local_jump(std::size_t i, const std::vector<doub
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   for (int c = 0; c < dim_; ++c)
     g(c) = u[dofs_.dof(p.node_b, c)] - u[dofs_.dof(p.node_a, c)];
-  const Eigen::Vector3d local = frame(p, dim_).transpose() * g;
+  const Eigen::Vector3d local = pair_frame(p, dim_).transpose() * g;
   LocalVector out = local.head(dim_) + offset_[i];
   out(0) += iface_.initial_gap + p.gap + gap_shift_;
   return out;
@@ -139,10 +140,11 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
     const double err = std::numeric_limits<double>::epsilon() * p.weight * rho_[i] * u_size;
     roundoff_force_ += err * err;
     tangent_[i] = d.dt_djump;
+    derivatives_[i] = d;
     if (!(tangent_[i] == assembled_tangent_[i])) tangent_changed_ = true;
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
     t.head(dim_) = resp.traction;
-    force_[i] = p.weight * (frame(p, dim_) * t);
+    force_[i] = p.weight * (pair_frame(p, dim_) * t);
   }
   roundoff_force_ = std::sqrt(roundoff_force_);
 }
@@ -156,7 +158,7 @@ void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMat
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     if (!owned_[i]) continue;
     const InterfacePair& p = iface_.pairs[i];
-    const Eigen::MatrixXd Q = frame(p, dim_).topLeftCorner(dim_, dim_);
+    const Eigen::MatrixXd Q = pair_frame(p, dim_).topLeftCorner(dim_, dim_);
     // K = −∂R/∂u; R_b = +A Q t(ĝ), ĝ = Qᵀ(u_b − u_a): ∂R_b/∂u_b = A Q (∂t/∂ĝ) Qᵀ.
     const Eigen::MatrixXd Kt = -p.weight * (Q * Eigen::MatrixXd(tangent_[i]) * Q.transpose());
     for (int r = 0; r < dim_; ++r) {
@@ -179,6 +181,10 @@ void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMat
     }
     R.add(block.data(), n, Rl.data());
   }
+}
+
+LocalMatrix InterfaceAssembler::frame(std::size_t i) const {
+  return pair_frame(iface_.pairs[i], dim_).topLeftCorner(dim_, dim_);
 }
 
 void InterfaceAssembler::update_multipliers() {
@@ -209,7 +215,7 @@ void InterfaceAssembler::set_tied_forces(const std::vector<double>& force_all) {
     for (int c = 0; c < dim_; ++c)
       F(c) = force_all[dofs_.dof(p.node_a, c)];
     force_[i] = F;
-    const Eigen::Vector3d local = frame(p, dim_).transpose() * F;
+    const Eigen::Vector3d local = pair_frame(p, dim_).transpose() * F;
     PairResult& res = results_[i];
     res.traction = p.weight > 0 ? LocalVector(local.head(dim_) / p.weight)
                                 : LocalVector(LocalVector::Zero(dim_));

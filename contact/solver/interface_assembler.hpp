@@ -105,6 +105,14 @@ public:
 
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }
+  /// Generalized derivatives of the last evaluation of pair `i` (local frame), for the exact
+  /// generalized Newton (InterfaceNewtonSystem).
+  const InterfaceResponseDerivatives& derivatives(std::size_t i) const { return derivatives_[i]; }
+  /// The multipliers r̂ the next evaluate() uses (local frame, kPa), one per pair.
+  const std::vector<LocalVector>& multipliers() const { return multiplier_; }
+  void set_multipliers(const std::vector<LocalVector>& r) { multiplier_ = r; }
+  /// Local frame Q_i = [n, t1 (, t2)] of pair `i` (dim × dim, columns).
+  LocalMatrix frame(std::size_t i) const;
   /// Resultant force body 1 exerts on body 2 (kN, global components), last evaluation.
   std::array<double, 3> resultant() const;
   /// Largest A_i ‖t_i‖ (kN): a force scale for convergence checks.
@@ -128,6 +136,7 @@ private:
   std::vector<LocalVector> multiplier_;
   std::vector<PairResult> results_;
   std::vector<LocalMatrix> tangent_, assembled_tangent_;
+  std::vector<InterfaceResponseDerivatives> derivatives_;
   std::vector<Eigen::Vector3d> force_; ///< A_i Q_i t_i, global components (padded to 3)
   std::vector<LocalVector> offset_;    ///< jump kept through displacement resets
   double multiplier_change_ = 0;

@@ -1,0 +1,114 @@
+#include "contact/solver/interface_newton_system.hpp"
+
+#include <algorithm>
+
+namespace bipot::contact {
+
+InterfaceNewtonSystem::InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces,
+                                             const DofMap& dofs)
+    : dim_(dofs.dofs_per_node()) {
+  for (InterfaceAssembler* ia : interfaces)
+    if (!ia->tied()) interfaces_.push_back(ia);
+  // A node may belong to two interfaces (the corner of a pile's shaft and toe): one x each.
+  for (InterfaceAssembler* ia : interfaces_)
+    for (const InterfacePair& p : ia->interface().pairs)
+      for (int c = 0; c < dim_; ++c) {
+        dofs_.push_back(dofs.dof(p.node_a, c));
+        dofs_.push_back(dofs.dof(p.node_b, c));
+      }
+  std::sort(dofs_.begin(), dofs_.end());
+  dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
+  auto position = [&](Index dof) {
+    return static_cast<Index>(std::lower_bound(dofs_.begin(), dofs_.end(), dof) - dofs_.begin());
+  };
+  Index next = num_dofs();
+  for (InterfaceAssembler* ia : interfaces_)
+    for (std::size_t i = 0; i < ia->num_pairs(); ++i) {
+      const InterfacePair& p = ia->interface().pairs[i];
+      // DOFs are node-major (dof = node × dim + c), so a node's components are consecutive.
+      pairs_.push_back(
+          {ia, i, position(dofs.dof(p.node_a, 0)), position(dofs.dof(p.node_b, 0)), next});
+      next += dim_;
+    }
+  num_multipliers_ = next - num_dofs();
+}
+
+Eigen::VectorXd InterfaceNewtonSystem::multipliers() const {
+  Eigen::VectorXd lambda(num_multipliers_);
+  for (const PairSlots& s : pairs_) {
+    const double A = s.iface->interface().pairs[s.pair].weight;
+    lambda.segment(s.multiplier - num_dofs(), dim_) = A * s.iface->multipliers()[s.pair];
+  }
+  return lambda;
+}
+
+void InterfaceNewtonSystem::set_multipliers(const Eigen::VectorXd& lambda) const {
+  for (InterfaceAssembler* ia : interfaces_) {
+    std::vector<LocalVector> r = ia->multipliers();
+    for (const PairSlots& s : pairs_) {
+      if (s.iface != ia) continue;
+      const double A = ia->interface().pairs[s.pair].weight;
+      r[s.pair] = A > 0 ? LocalVector(lambda.segment(s.multiplier - num_dofs(), dim_) / A)
+                        : LocalVector(LocalVector::Zero(dim_));
+    }
+    ia->set_multipliers(r);
+  }
+}
+
+void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+                                Eigen::MatrixXd* J) const {
+  const int d = dim_;
+  for (const PairSlots& s : pairs_) {
+    const double A = s.iface->interface().pairs[s.pair].weight;
+    const Index m = s.multiplier;
+    if (!(A > 0)) { // a pair without area carries no force: λ stays at A r̂ = 0
+      F.segment(m, d).setZero();
+      if (J) J->block(m, m, d, d) += Eigen::MatrixXd::Identity(d, d);
+      continue;
+    }
+    const PairResult& res = s.iface->results()[s.pair];
+    const InterfaceResponseDerivatives& der = s.iface->derivatives(s.pair);
+    const Eigen::MatrixXd Q = s.iface->frame(s.pair);
+    const Eigen::VectorXd r_in = s.iface->multipliers()[s.pair];
+    const Eigen::VectorXd adhesive = res.traction - res.r;
+    // Interface force on b (global components): Q (λ + A a).
+    const Eigen::VectorXd force = Q * (A * r_in + A * adhesive);
+    F.segment(m, d) = A * (r_in - res.r);
+    for (int c = 0; c < d; ++c) {
+      if (!constrained[s.b + c]) F(s.b + c) += force(c);
+      if (!constrained[s.a + c]) F(s.a + c) -= force(c);
+    }
+    if (!J) continue;
+    // d(adhesive)/d(jump), β's dependence on the jump included.
+    const Eigen::MatrixXd D = der.dt_djump - der.dr_djump;
+    const Eigen::MatrixXd Kc = A * Q * D * Q.transpose();         // ∂(force on b)/∂x_b
+    const Eigen::MatrixXd Cx = -A * der.dr_djump * Q.transpose(); // ∂F_λ/∂x_b
+    for (int r = 0; r < d; ++r) {
+      const bool free_b = !constrained[s.b + r], free_a = !constrained[s.a + r];
+      for (int c = 0; c < d; ++c) {
+        if (free_b) {
+          (*J)(s.b + r, s.b + c) += Kc(r, c);
+          (*J)(s.b + r, s.a + c) -= Kc(r, c);
+          (*J)(s.b + r, m + c) += Q(r, c);
+        }
+        if (free_a) {
+          (*J)(s.a + r, s.b + c) -= Kc(r, c);
+          (*J)(s.a + r, s.a + c) += Kc(r, c);
+          (*J)(s.a + r, m + c) -= Q(r, c);
+        }
+        (*J)(m + r, s.b + c) += Cx(r, c);
+        (*J)(m + r, s.a + c) -= Cx(r, c);
+      }
+    }
+    J->block(m, m, d, d) += Eigen::MatrixXd::Identity(d, d) - Eigen::MatrixXd(der.dr_dr);
+  }
+}
+
+double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) const {
+  double worst = 0;
+  for (const PairSlots& s : pairs_)
+    worst = std::max(worst, F.segment(s.multiplier, dim_).norm());
+  return worst;
+}
+
+} // namespace bipot::contact

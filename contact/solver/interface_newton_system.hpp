@@ -1,0 +1,67 @@
+#pragma once
+/// The interface equations of the exact generalized Newton (`generalized_newton`), once the
+/// bulk has been condensed onto the interface DOFs.
+///
+/// Unknowns: x, the displacement increments of the interface DOFs I (both copies of every
+/// pair's nodes), and λ_i = A_i r_i (kN, local frame), the irreversible interface force of
+/// every pair (Alart & Curnier 1991: the multipliers are unknowns of the Newton step, not
+/// moved by an outer loop). With the bulk condensed (Schur complement S, reduced load c):
+///
+///     F_x  = c − S x + f_c(x, λ)                    equilibrium of I
+///     F_λi = λ_i − A_i Proj_{K_μ̄}(τ_i),  τ_i = λ_i/A_i − ρ_i [Δg_t + (g_n + μ̄‖Δg_t‖) n]
+///
+/// f_c puts +Q_i (λ_i + A_i a_i) on node b and its opposite on node a, a_i = −β²(C_n g_n n +
+/// C_t g_t) the adhesive traction with β = β(jump) the implicit update. F_λ = 0 is the
+/// bipotential fixed point of formulation.md §4, hence the interface law itself. Its exact
+/// generalized Jacobian, from the projection's and the β update's derivatives
+/// (InterfaceResponseDerivatives), makes the iteration locally quadratic; in stick
+/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0.
+
+#include "contact/solver/interface_assembler.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace bipot::contact {
+
+class InterfaceNewtonSystem {
+public:
+  /// The non-tied interfaces among `interfaces` (not owned) take part.
+  InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces, const DofMap& dofs);
+
+  /// Global DOFs of I, sorted: rows and columns of x.
+  const std::vector<Index>& dofs() const { return dofs_; }
+  Index num_dofs() const { return static_cast<Index>(dofs_.size()); }
+  Index num_multipliers() const { return num_multipliers_; }
+  Index size() const { return num_dofs() + num_multipliers_; }
+
+  /// λ = A r̂ from the interfaces' current multipliers.
+  Eigen::VectorXd multipliers() const;
+  /// r̂ = λ / A on the interfaces, for their next evaluate().
+  void set_multipliers(const Eigen::VectorXd& lambda) const;
+
+  /// For the interfaces' last evaluate(): adds f_c to F.head(num_dofs()) and sets
+  /// F.tail(num_multipliers()) to F_λ; with J, adds their derivatives with respect to
+  /// (x, λ). Rows of I-DOFs flagged in `constrained` (same order as dofs()) get no interface
+  /// term: their equation prescribes the DOF (the reaction takes the interface force).
+  void add(const std::vector<bool>& constrained, Eigen::VectorXd& F, Eigen::MatrixXd* J) const;
+
+  /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
+  double multiplier_residual(const Eigen::VectorXd& F) const;
+
+private:
+  struct PairSlots {
+    InterfaceAssembler* iface;
+    std::size_t pair;
+    Index a, b;       ///< position in dofs() of node a's / node b's first component
+    Index multiplier; ///< position of λ_i in the unknowns
+  };
+  std::vector<InterfaceAssembler*> interfaces_;
+  std::vector<Index> dofs_;
+  std::vector<PairSlots> pairs_;
+  Index num_multipliers_ = 0;
+  int dim_;
+};
+
+} // namespace bipot::contact
