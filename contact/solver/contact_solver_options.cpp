@@ -78,13 +78,26 @@ const Registry<ContactSolverOptions>& contact_solvers() {
     r.add(uzawa, [](const ParameterSet& p) {
       return std::make_unique<ContactSolverOptions>(from("bipotential_uzawa", p));
     });
+    ParamSchema exact("generalized_newton",
+                      "exact generalized Newton (Alart-Curnier): displacements and interface "
+                      "multipliers are the unknowns of one Newton step, the bulk condensed onto "
+                      "the interface DOFs by a MUMPS Schur complement");
+    // rho only weighs the jump against the force inside the projection (which pairs are
+    // stuck, sliding or open at the next iterate); it no longer sets a convergence rate.
+    common_keys(exact, 1.0);
+    exact.integer("max_iterations", "Newton iterations per increment")
+        .at_least(1)
+        .with_default(50L);
+    r.add(exact, [](const ParameterSet& p) {
+      return std::make_unique<ContactSolverOptions>(from("generalized_newton", p));
+    });
     return r;
   }();
   return registry;
 }
 
 ContactSolverOptions default_contact_solver() {
-  return *contact_solvers().create("semismooth_newton", ParameterSet{});
+  return *contact_solvers().create("generalized_newton", ParameterSet{});
 }
 
 } // namespace bipot::contact

@@ -12,6 +12,9 @@
 ///   of the current inner problem dropped tenfold, so equilibrium and the contact law
 ///   converge together. (Moving r̂ after every iteration, Alart–Curnier style with the
 ///   multiplier condensed, cycled between stick and slip on the sheared-block test.)
+/// - generalized_newton: the multipliers are unknowns of the Newton step itself, with the
+///   exact generalized Jacobian of the fixed point (interface_newton_system.hpp); no outer
+///   multiplier loop.
 
 #include "fem/core/parameter_schema.hpp"
 #include "fem/core/registry.hpp"
@@ -21,7 +24,7 @@
 namespace bipot::contact {
 
 struct ContactSolverOptions {
-  std::string type = "semismooth_newton";
+  std::string type = "generalized_newton";
   double augmentation = 0;         ///< ρ (kN/m³); 0 = automatic per pair
   double augmentation_factor = 30; ///< multiplies the automatic ρ
   double tolerance = 1e-8;         ///< on the force residual and on the multiplier change
@@ -31,13 +34,15 @@ struct ContactSolverOptions {
   bool line_search = true;         ///< backtracking on the residual norm
 
   bool uzawa() const { return type == "bipotential_uzawa"; }
+  /// Exact generalized Newton on the condensed interface system (InterfaceNewtonSystem).
+  bool exact_newton() const { return type == "generalized_newton"; }
 };
 
 /// The solvers by YAML name, each with its parameter schema (for validation and docs).
 /// Registry entries build a ContactSolverOptions from validated parameters.
 const Registry<ContactSolverOptions>& contact_solvers();
 
-/// Options of the default solver (semismooth_newton with its defaults).
+/// Options of the default solver (generalized_newton with its defaults).
 ContactSolverOptions default_contact_solver();
 
 } // namespace bipot::contact

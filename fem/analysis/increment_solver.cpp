@@ -28,6 +28,7 @@ double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, dou
 // Newton (and, for bipotential_uzawa, Uzawa) iterations of one increment ending at stage
 // load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
 bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log) {
+  if (newton_system) return solve_increment_exact(lambda, dtau, log);
   const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
   const contact::ContactSolverOptions& copt = model.contact_solver;
   const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
@@ -154,21 +155,11 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       for (const auto& kv : target)
         fixed.set(kv.first, 0.0);
       std::vector<double> trial(u.size());
-      double best = norm, best_step = 1.0;
-      bool accepted = false;
-      for (int k = 0; k < 8 && !accepted; ++k) {
+      step = backtracking_step(norm, [&](double s) {
         for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + step * du_all[i];
-        const double merit = residual_norm(trial, dtau, fixed);
-        accepted = merit < (1.0 - 1e-4 * step) * norm;
-        if (!accepted) {
-          if (merit < best) best = merit, best_step = step;
-          step *= 0.5;
-        }
-      }
-      // No sufficient decrease: take the best step tried, or the full one if none helped
-      // (at a kink the Newton direction need not be a descent direction).
-      if (!accepted) step = best < norm ? best_step : 1.0;
+          trial[i] = u[i] + s * du_all[i];
+        return residual_norm(trial, dtau, fixed);
+      });
       summary.assembly_seconds += seconds_since(t0);
     }
     for (std::size_t i = 0; i < u.size(); ++i)

@@ -121,7 +121,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
             << ". Converged increments are in the output directory.";
         throw SolverError(msg.str());
       }
-      solid.commit();
       for (const auto& ia : interfaces)
         ia->commit();
       auto t0 = std::chrono::steady_clock::now();
@@ -130,6 +129,9 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
+      // Commit after that cell loop at the converged u: generalized_newton's last bulk
+      // assembly was at the start of the increment (the rest followed by condensation).
+      solid.commit();
       reaction.axpy(-1.0, F_step);
       if (has_contact) {
         R.set_zero();
@@ -154,6 +156,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.linear_iterations = log.linear_iterations;
       rep.uzawa_updates = log.uzawa_updates;
       rep.residual = log.history.empty() ? 0.0 : log.history.back();
+      rep.residual_history = log.history;
       rep.cutbacks = level;
       rep.staggered = log.staggered;
       rep.unstable = level > 0 || log.staggered > 0;

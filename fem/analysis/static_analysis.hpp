@@ -37,7 +37,10 @@ struct StepReport {
   double load_factor = 0; ///< λ within the stage, in (0, 1]
   int iterations = 0;     ///< Newton iterations
   int linear_iterations = 0;
-  double residual = 0;   ///< final relative residual
+  double residual = 0; ///< final relative residual
+  /// Relative force residual at each iteration of the converged attempt (the convergence
+  /// rate: quadratic for generalized_newton on a smooth branch).
+  std::vector<double> residual_history;
   double seconds = 0;    ///< wall time of the increment
   int cutbacks = 0;      ///< halvings needed before this increment converged
   int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)

@@ -103,7 +103,7 @@ struct InterfaceSpec {
 };
 
 struct ContactSolverSpec {
-  std::string type = "semismooth_newton";
+  std::string type = "generalized_newton";
   ParameterSet parameters; ///< validated against the solver's schema
   std::string where;
 };

@@ -61,7 +61,7 @@ TEST(ParallelConsistency, CgMueLu) {
 
 // A frictional RCCM interface sheared and pulled into softening: the pairs are assembled by
 // the rank owning node a and evaluated on every rank.
-std::vector<double> solve_contact() {
+std::vector<double> solve_contact(const std::string& solver = "semismooth_newton") {
   const std::string text =
       "kinematics: plane_strain\n"
       "mesh:\n  blocks:\n    cell: quad4\n"
@@ -75,7 +75,9 @@ std::vector<double> solve_contact() {
       "interfaces:\n  - {name: joint, between: [base, block], law: rccm, parameters: "
       "{normal_stiffness: 1.0e5, tangential_stiffness: 1.0e5, decohesion_energy: 0.01, "
       "friction_coefficient: 0.5}}\n"
-      "contact_solver: {type: semismooth_newton, tolerance: 1.0e-12}\n"
+      "contact_solver: {type: " +
+      solver +
+      ", tolerance: 1.0e-12}\n"
       "stages:\n  - name: load\n    increments: 4\n    boundary_conditions:\n"
       "      - {set: bottom, component: x, value: 0}\n"
       "      - {set: bottom, component: y, value: 0}\n"
@@ -89,6 +91,15 @@ std::vector<double> solve_contact() {
 
 TEST(ParallelConsistency, RccmInterface) {
   compare_or_write("rccm", solve_contact());
+}
+
+// generalized_newton: the Schur complement is formed on rank 0 and broadcast, and every rank
+// runs the same dense interface iteration.
+TEST(ParallelConsistency, RccmInterfaceGeneralizedNewton) {
+  const std::vector<double> u = solve_contact("generalized_newton");
+  compare_or_write("rccm_generalized_newton", u);
+  // Same problem, same tolerance as the semismooth_newton run above.
+  EXPECT_LT(test::relative_difference(u, solve_contact()), 1e-8);
 }
 
 } // namespace

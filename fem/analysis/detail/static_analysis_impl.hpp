@@ -3,6 +3,7 @@
 /// stage driver and the public accessors) and increment_solver.cpp (the iterations of one
 /// increment: Newton/Uzawa, line search, the staggered fallback).
 
+#include "contact/solver/interface_newton_system.hpp"
 #include "fem/analysis/initial_stress.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -14,6 +15,7 @@
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 #include "fem/linalg/linear_solver.hpp"
+#include "fem/linalg/schur_complement_solver.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
 
@@ -57,6 +59,21 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Backtracking (Armijo) on a merit function along a Newton direction: halves the step from 1
+// up to 8 times until merit(step) < (1 − 1e-4 step) merit0. Without such a decrease, the best
+// step tried, or the full one if none helped (at a kink of the contact law the Newton
+// direction need not be a descent direction).
+template <class Merit> double backtracking_step(double merit0, Merit merit) {
+  double step = 1.0, best = merit0, best_step = 1.0;
+  for (int k = 0; k < 8; ++k) {
+    const double m = merit(step);
+    if (m < (1.0 - 1e-4 * step) * merit0) return step;
+    if (m < best) best = m, best_step = step;
+    step *= 0.5;
+  }
+  return best < merit0 ? best_step : 1.0;
+}
+
 } // namespace analysis_detail
 
 struct StaticAnalysis::Impl {
@@ -80,6 +97,12 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  // generalized_newton: the bulk condensed onto the interface DOFs, refactorised only when
+  // the bulk tangent or the constrained DOFs change.
+  std::unique_ptr<contact::InterfaceNewtonSystem> newton_system;
+  SchurComplementSolver schur;
+  bool schur_ready = false;
+  std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
 
   // Boundary-condition targets of the current stage and the values they start from.
   std::map<Index, double> target, start;
@@ -119,6 +142,25 @@ struct StaticAnalysis::Impl {
     if (!m.spec.initial_stress.empty()) solid.set_initial_stress(initial_stress_function(m));
     F_prev.set_zero();
     if (has_contact) choose_augmentation();
+    if (has_contact && model.contact_solver.exact_newton()) {
+      std::vector<contact::InterfaceAssembler*> all;
+      for (const auto& ia : interfaces)
+        all.push_back(ia.get());
+      newton_system = std::make_unique<contact::InterfaceNewtonSystem>(all, dofs);
+      // The condensed system is dense: its LU costs (2/3) n³ per iteration and it holds 2 n²
+      // doubles (S and J). Past this size semismooth_newton (sparse, the whole mesh) is the
+      // better tool; say so rather than run out of memory or time.
+      constexpr Index max_dense = 12000; // 2.3 GB for S and J
+      if (newton_system->size() > max_dense)
+        throw InputError(
+            {(model.spec.contact_solver.where.empty() ? std::string()
+                                                      : model.spec.contact_solver.where + ": ") +
+             "contact_solver.type: generalized_newton condenses the model onto its " +
+             std::to_string(newton_system->num_dofs()) + " interface DOFs and " +
+             std::to_string(newton_system->num_multipliers()) +
+             " multipliers, a dense system of more than " + std::to_string(max_dense) +
+             " unknowns; use type: semismooth_newton for interfaces this large"});
+    }
   }
 
   // ρ per pair from the bulk stiffness diagonal (one bulk assembly, before any constraint).
@@ -164,6 +206,7 @@ struct StaticAnalysis::Impl {
     std::string failure;
   };
 
+  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log);
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
   static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
   // Predictor of the next increment: its size over the last converged one's in this stage

@@ -187,7 +187,7 @@ TEST(InterfaceInput, UnknownLawAndSolverListRegisteredNames) {
       "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: perfect_bonding\n",
       "contact_solver: {type: uzawa}\n"));
   EXPECT_TRUE(has(q, "contact_solver.type: unknown contact solver 'uzawa'; registered: "
-                     "bipotential_uzawa, semismooth_newton"));
+                     "bipotential_uzawa, generalized_newton, semismooth_newton"));
 }
 
 TEST(InterfaceInput, RegionsThatDoNotTouch) {
