@@ -6,8 +6,10 @@
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/mesh/cell_facets.hpp"
+#include "fem/mesh/merge_nodes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <map>
@@ -299,6 +301,47 @@ Interface pair_facet_sets(const Mesh& mesh, Kinematics kin, const InterfaceDefin
   return iface;
 }
 
+// Perfect bonding between separately meshed bodies: the pairs of facet-set interfaces become
+// shared nodes, exactly as a region interface that is not split, so the bodies are one mesh
+// and no constraint is needed. A pair's nodes must then be at one place (a normal pairing
+// across a gap cannot be glued without moving a node).
+void glue_facet_set_pairs(Mesh& mesh, const std::vector<InterfaceDefinition>& defs,
+                          std::vector<Interface>& out) {
+  std::array<double, 3> lo = mesh.nodes.front(), hi = lo;
+  for (const auto& x : mesh.nodes)
+    for (int c = 0; c < 3; ++c)
+      lo[c] = std::min(lo[c], x[c]), hi[c] = std::max(hi[c], x[c]);
+  const double tolerance =
+      1e-9 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  std::vector<std::pair<Index, Index>> glue;
+  std::vector<std::string> problems;
+  for (std::size_t i = 0; i < defs.size(); ++i) {
+    if (!defs[i].region_a.empty()) continue;
+    for (const InterfacePair& p : out[i].pairs) {
+      if (std::abs(p.gap) > tolerance) {
+        problems.push_back(prefix(defs[i]) + "perfect bonding joins coincident nodes, but " +
+                           mesh.describe_node(p.node_a) + " and " + mesh.describe_node(p.node_b) +
+                           " are " + format_length(std::abs(p.gap)) +
+                           " apart along the normal; mesh the bodies to meet, or use pairing: "
+                           "coincident");
+        break;
+      }
+      glue.emplace_back(p.node_a, p.node_b);
+    }
+  }
+  if (!problems.empty()) throw InputError(problems);
+  if (glue.empty()) return;
+  const std::vector<Index> new_id = merge_nodes(mesh, glue);
+  for (Interface& iface : out) {
+    for (InterfacePair& p : iface.pairs)
+      p.node_a = new_id[p.node_a], p.node_b = new_id[p.node_b];
+    for (Facet& f : iface.facets_a)
+      for (Index& v : f.nodes)
+        v = new_id[v];
+  }
+}
+
 } // namespace
 
 std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
@@ -333,6 +376,7 @@ std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
   for (std::size_t i = 0; i < defs.size(); ++i)
     if (defs[i].region_a.empty()) out[i] = pair_facet_sets(work, kin, defs[i], problems);
   if (!problems.empty()) throw InputError(problems);
+  if (tie_only) glue_facet_set_pairs(work, defs, out);
 
   for (std::size_t i = 0; i < defs.size(); ++i) {
     Interface& iface = out[i];

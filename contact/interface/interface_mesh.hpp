@@ -58,8 +58,11 @@ struct Interface {
 /// same position (within 1e-9 × the mesh's bounding-box diagonal) or, with Pairing::Normal,
 /// with the node of b on the line through it along its normal n (see InterfacePair; within
 /// 1e-6 × the diagonal of that line; the nearest along the line if several), whose distance
-/// (x_b − x_a)·n becomes the pair's gap (< 0 for overlapping bodies). The mesh is not changed
-/// and `tie_only` does not apply (the pairs' nodes are distinct; a tied law then joins them).
+/// (x_b − x_a)·n becomes the pair's gap (< 0 for overlapping bodies). Without `tie_only` the
+/// mesh is not changed; with it (perfect bonding) every pair's two nodes are merged into one
+/// (merge_nodes(): node ids after them shift down), so the bodies share the interface nodes as
+/// in region mode and node_a == node_b; a pair more than 1e-9 × the diagonal apart along the
+/// normal is an InputError (gluing it would move a node).
 /// Either way the pairing must be one-to-one and cover both sets. Facets of set a without a
 /// cell are oriented outward of the cell holding them.
 ///
