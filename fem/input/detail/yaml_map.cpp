@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace bipot::input {
 
@@ -45,12 +45,41 @@ YAML::Node load_yaml(const std::string& text, const std::string& file_name) {
   return root;
 }
 
+namespace {
+const char* file_kind(const std::filesystem::file_status& status) {
+  namespace fs = std::filesystem;
+  if (fs::is_directory(status)) return "a directory";
+  if (fs::is_character_file(status)) return "a character device";
+  if (fs::is_block_file(status)) return "a block device";
+  if (fs::is_fifo(status)) return "a pipe";
+  if (fs::is_socket(status)) return "a socket";
+  return "not a regular file";
+}
+} // namespace
+
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path);
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || !fs::exists(status)) throw InputError(path + ": cannot open the input file");
+  if (!fs::is_regular_file(status))
+    throw InputError(path + ": is " + file_kind(status) +
+                     ", not an input file (a regular YAML file is expected)");
+  const std::string too_large = path + ": the input file is larger than " +
+                                std::to_string(max_input_bytes >> 20) +
+                                " MiB, the largest accepted";
+  const auto size = fs::file_size(path, ec);
+  if (!ec && size > max_input_bytes) throw InputError(too_large);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the input file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  // Bounded here too: the file may grow, and some (in /proc) report a size of 0.
+  std::string text;
+  std::string chunk(std::size_t(1) << 16, '\0');
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0) {
+    text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > max_input_bytes) throw InputError(too_large);
+  }
+  return text;
 }
 
 bool decode_real(const YAML::Node& n, double& out) {

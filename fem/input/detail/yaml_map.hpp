@@ -70,7 +70,12 @@ private:
 /// Parses YAML text; throws InputError "file:line:col: YAML syntax error: ..." or
 /// "file: the input file is empty".
 YAML::Node load_yaml(const std::string& text, const std::string& file_name);
-/// The whole content of a file; throws InputError "path: cannot open the input file".
+
+/// Input files larger than this are refused before they are parsed (64 MiB).
+constexpr std::size_t max_input_bytes = std::size_t(64) << 20;
+/// The whole content of a regular file of at most max_input_bytes, read with that bound (a
+/// device such as /dev/zero, a pipe or a directory is refused before reading). Throws
+/// InputError "path: cannot open the input file" or "path: ..." saying why it is refused.
 std::string read_text_file(const std::string& path);
 
 /// Decodes a scalar as a double / long / bool; false if it is not one.

@@ -1,0 +1,62 @@
+// No silent acceptance: what yaml-cpp or a narrowing conversion would let through unnoticed
+// (a key given twice, an integer that wraps, a component the kinematics lacks, two values for
+// one DOF, two outputs with one name, an endless input file) is an error at its line.
+#include "tests/unit/input/input_test_utils.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+namespace bipot {
+namespace {
+
+// Plane strain, two regions side by side; line numbers on the right.
+const std::string plane =
+    "kinematics: plane_strain\n"                                                    // 1
+    "mesh:\n"                                                                       // 2
+    "  blocks:\n"                                                                   // 3
+    "    cell: quad4\n"                                                             // 4
+    "    x: {breaks: [0, 1, 2], cells: [2, 2]}\n"                                   // 5
+    "    y: {breaks: [0, 1], cells: [2]}\n"                                         // 6
+    "    regions: [left, right]\n"                                                  // 7
+    "materials:\n"                                                                  // 8
+    "  left: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"  // 9
+    "  right: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.3}\n" // 10
+    "stages:\n"                                                                     // 11
+    "  - name: load\n"                                                              // 12
+    "    increments: 2\n"                                                           // 13
+    "    boundary_conditions:\n"                                                    // 14
+    "      - {set: bottom, component: y, value: 0}\n"                               // 15
+    "      - {set: left, component: x, value: 0}\n"                                 // 16
+    "    loads:\n"                                                                  // 17
+    "      - {type: pressure, set: top, value: 10}\n";                              // 18
+
+TEST(InputRobustness, ThePlaneStrainInputIsValid) {
+  EXPECT_TRUE(problems_of(plane).empty());
+}
+
+TEST(InputRobustness, OnlyBoundedRegularFilesAreRead) {
+  try {
+    read_problem_file("/dev/zero");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/zero: is a character device, not an input file (a "
+                                     "regular YAML file is expected)");
+  }
+  const auto dir = std::filesystem::temp_directory_path();
+  EXPECT_THROW(read_problem_file(dir.string()), InputError);
+  // One byte over 64 MiB (sparse: nothing is written but the size).
+  const auto big = dir / "bipot_input_too_large.yaml";
+  std::ofstream(big).close();
+  std::filesystem::resize_file(big, (std::size_t(64) << 20) + 1);
+  try {
+    read_problem_file(big.string());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              big.string() + ": the input file is larger than 64 MiB, the largest accepted");
+  }
+  std::filesystem::remove(big);
+}
+
+} // namespace
+} // namespace bipot
