@@ -62,6 +62,7 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
   if (m.has("sets")) {
     const YAML::Node sets = m.node("sets");
     if (!sets.IsMap()) m.error("sets", "expected a map: name -> {min: [...], max: [...]}");
+    report_duplicate_keys(sets, "mesh.sets", top.diag());
     for (const auto& kv : sets.IsMap() ? sets : YAML::Node()) {
       BoxSetSpec box;
       box.name = kv.first.Scalar();
@@ -133,6 +134,7 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
     diag.error(node, path, "expected a map of parameters, got " + describe_node(node));
     return params;
   }
+  report_duplicate_keys(node, path, diag);
   std::map<std::string, YAML::Node> key_nodes;
   for (const auto& kv : node) {
     const std::string key = kv.first.Scalar();
@@ -194,6 +196,7 @@ std::vector<MaterialSpec> read_materials(const YamlMap& top) {
     return out;
   }
   const auto& registry = materials();
+  report_duplicate_keys(node, "materials", top.diag());
   for (const auto& kv : node) {
     MaterialSpec mat;
     mat.region = kv.first.Scalar();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace bipot::input {
 
@@ -23,7 +24,9 @@ void Diagnostics::error(const YAML::Node& node, const std::string& path,
 }
 
 void Diagnostics::error_at(const std::string& where, const std::string& message) {
-  problems_.push_back(where + ": " + message);
+  const std::string problem = where + ": " + message;
+  if (std::find(problems_.begin(), problems_.end(), problem) == problems_.end())
+    problems_.push_back(problem);
 }
 
 std::string join_path(const std::string& parent, const std::string& key) {
@@ -123,6 +126,20 @@ std::string describe_node(const YAML::Node& n) {
   return "'" + n.Scalar() + "'";
 }
 
+void report_duplicate_keys(const YAML::Node& node, const std::string& path, Diagnostics& diag) {
+  if (!node.IsMap()) return;
+  std::map<std::string, YAML::Mark> first;
+  for (const auto& kv : node) {
+    if (!kv.first.IsScalar()) continue;
+    const std::string& key = kv.first.Scalar();
+    const auto [at, inserted] = first.emplace(key, kv.first.Mark());
+    if (!inserted)
+      diag.error(kv.first, join_path(path, key),
+                 "key '" + key + "' given twice (first at line " +
+                     std::to_string(at->second.line + 1) + ")");
+  }
+}
+
 YamlMap::YamlMap(const YAML::Node& node, std::string path, Diagnostics& diag,
                  const std::vector<std::string>& allowed)
     : node_(node), path_(std::move(path)), diag_(diag) {
@@ -131,6 +148,7 @@ YamlMap::YamlMap(const YAML::Node& node, std::string path, Diagnostics& diag,
     return;
   }
   valid_ = true;
+  report_duplicate_keys(node_, path_, diag_);
   for (const auto& kv : node_) {
     const std::string key = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;

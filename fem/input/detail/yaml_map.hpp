@@ -17,7 +17,8 @@ public:
   /// "file:line:col: path" for a node.
   std::string where(const YAML::Node& node, const std::string& path) const;
   void error(const YAML::Node& node, const std::string& path, const std::string& message);
-  /// A problem whose location is already formatted by where().
+  /// A problem whose location is already formatted by where(). A problem already recorded
+  /// (the same map read by two readers) is not repeated.
   void error_at(const std::string& where, const std::string& message);
   const std::vector<std::string>& problems() const { return problems_; }
   const std::string& file() const { return file_; }
@@ -31,8 +32,12 @@ private:
 std::string join_path(const std::string& parent, const std::string& key);
 std::string index_path(const std::string& parent, std::size_t i);
 
-/// A YAML mapping with a fixed set of allowed keys. Construction reports a non-map node and
-/// every unknown key (with the nearest allowed key).
+/// Records every key of the map `node` given more than once, at each repetition: yaml-cpp
+/// keeps them all and looks up the first, so the later values would be silently ignored.
+void report_duplicate_keys(const YAML::Node& node, const std::string& path, Diagnostics& diag);
+
+/// A YAML mapping with a fixed set of allowed keys. Construction reports a non-map node,
+/// every unknown key (with the nearest allowed key) and every key given twice.
 class YamlMap {
 public:
   YamlMap(const YAML::Node& node, std::string path, Diagnostics& diag,

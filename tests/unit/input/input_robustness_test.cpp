@@ -58,5 +58,22 @@ TEST(InputRobustness, OnlyBoundedRegularFilesAreRead) {
   std::filesystem::remove(big);
 }
 
+TEST(InputRobustness, KeyGivenTwice) {
+  // At the top level, in a material's parameters, in materials, in a flow map of a list.
+  EXPECT_TRUE(reports(plane, "stages:\n", "kinematics: three_d\nstages:\n",
+                      "in.yaml:11:1: kinematics: key 'kinematics' given twice (first at line 1)"));
+  EXPECT_TRUE(reports(plane, "0.3}\n  right", "0.3, youngs_modulus: 1}\n  right",
+                      "in.yaml:9:76: materials.left.youngs_modulus: key 'youngs_modulus' given "
+                      "twice (first at line 9)"));
+  EXPECT_TRUE(reports(plane, "stages:\n", "  left: {type: linear_elastic}\nstages:\n",
+                      "in.yaml:11:3: materials.left: key 'left' given twice (first at line 9)"));
+  const std::string set_twice = replace(plane, "{set: left,", "{set: left, set: top,");
+  EXPECT_TRUE(has(problems_of(set_twice),
+                  "in.yaml:16:21: stages[0].boundary_conditions[1].set: key 'set' given "
+                  "twice (first at line 16)"));
+  // Each repetition is reported once, even where two readers walk the same map.
+  EXPECT_EQ(problems_of(set_twice).size(), 1u);
+}
+
 } // namespace
 } // namespace bipot
