@@ -145,30 +145,31 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
     ParamValue value = v.IsScalar() ? ParamValue(v.Scalar()) : ParamValue(describe_node(v));
     if (spec) {
       double d = 0;
-      long i = 0;
+      int i = 0;
       bool b = false;
-      bool ok = true;
+      std::string problem;
+      const auto expect = [&](bool ok, const char* what) {
+        if (!ok) problem = std::string("expected ") + what + ", got " + describe_node(v);
+      };
       switch (spec->type) {
       case ParamType::Real:
-        ok = decode_real(v, d), value = d;
+        expect(decode_real(v, d), "a real number");
+        value = d;
         break;
-      case ParamType::Integer:
-        ok = decode_integer(v, i), value = i;
+      case ParamType::Integer: // consumers take an int: a larger value must not wrap
+        problem = decode_int(v, i);
+        value = static_cast<long>(i);
         break;
       case ParamType::Boolean:
-        ok = decode_boolean(v, b), value = b;
+        expect(decode_boolean(v, b), "true or false");
+        value = b;
         break;
       case ParamType::String:
-        ok = v.IsScalar();
+        expect(v.IsScalar(), "a string");
         break;
       }
-      if (!ok) {
-        const char* what = spec->type == ParamType::Integer   ? "an integer"
-                           : spec->type == ParamType::Real    ? "a real number"
-                           : spec->type == ParamType::Boolean ? "true or false"
-                                                              : "a string";
-        diag.error(kv.first, join_path(path, key),
-                   std::string("expected ") + what + ", got " + describe_node(v));
+      if (!problem.empty()) {
+        diag.error(kv.first, join_path(path, key), problem);
         continue;
       }
     }

@@ -4,9 +4,11 @@
 #include "fem/core/nearest_name.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 
 namespace bipot::input {
@@ -114,6 +116,28 @@ bool decode_integer(const YAML::Node& n, long& out) {
   }
 }
 
+namespace {
+// "12", "-3", "+400000000000000000000": an integer literal, whatever its size.
+bool is_whole_number(const std::string& s) {
+  const std::size_t sign = !s.empty() && (s[0] == '+' || s[0] == '-') ? 1 : 0;
+  return s.size() > sign && std::all_of(s.begin() + static_cast<std::ptrdiff_t>(sign), s.end(),
+                                        [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+} // namespace
+
+std::string decode_int(const YAML::Node& n, int& out) {
+  using limits = std::numeric_limits<int>;
+  long v = 0;
+  const bool decoded = decode_integer(n, v);
+  if (!decoded && !(n.IsScalar() && is_whole_number(n.Scalar())))
+    return "expected an integer, got " + describe_node(n);
+  if (!decoded || v < limits::min() || v > limits::max())
+    return "value " + n.Scalar() + " is out of range for an integer [" +
+           std::to_string(limits::min()) + ", " + std::to_string(limits::max()) + "]";
+  out = static_cast<int>(v);
+  return "";
+}
+
 bool decode_boolean(const YAML::Node& n, bool& out) {
   if (!n.IsScalar()) return false;
   return YAML::convert<bool>::decode(n, out);
@@ -184,17 +208,17 @@ void YamlMap::error(const std::string& key, const std::string& message) const {
 }
 
 namespace {
+// Decoders return "" or what is wrong with the node.
 template <class Decode, class T>
-bool read_scalar(const YamlMap& m, const std::string& key, T& out, bool required, const char* what,
-                 Decode decode) {
+bool read_scalar(const YamlMap& m, const std::string& key, T& out, bool required, Decode decode) {
   if (!m.has(key)) {
     if (required && m.valid()) m.missing(key);
     return !required;
   }
-  const YAML::Node n = m.node(key);
   T v{};
-  if (!decode(n, v)) {
-    m.error(key, std::string("expected ") + what + ", got " + describe_node(n));
+  const std::string problem = decode(m.node(key), v);
+  if (!problem.empty()) {
+    m.error(key, problem);
     return false;
   }
   out = v;
@@ -217,9 +241,9 @@ bool read_list(const YamlMap& m, const std::string& key, std::vector<T>& out, bo
   bool ok = true;
   for (std::size_t i = 0; i < n.size(); ++i) {
     T v{};
-    if (!decode(n[i], v)) {
-      m.diag().error(n[i], index_path(m.path(key), i),
-                     std::string("expected ") + what + ", got " + describe_node(n[i]));
+    const std::string problem = decode(n[i], v);
+    if (!problem.empty()) {
+      m.diag().error(n[i], index_path(m.path(key), i), problem);
       ok = false;
     }
     values.push_back(v);
@@ -228,12 +252,14 @@ bool read_list(const YamlMap& m, const std::string& key, std::vector<T>& out, bo
   return ok;
 }
 
-bool decode_int(const YAML::Node& n, int& out) {
-  long v = 0;
-  if (!decode_integer(n, v)) return false;
-  out = static_cast<int>(v);
-  return true;
+// A yes/no decoder as one that says what was expected.
+template <class T> auto expecting(const char* what, bool (*decode)(const YAML::Node&, T&)) {
+  return [what, decode](const YAML::Node& n, T& out) {
+    return decode(n, out) ? std::string()
+                          : std::string("expected ") + what + ", got " + describe_node(n);
+  };
 }
+
 bool decode_string(const YAML::Node& n, std::string& out) {
   if (!n.IsScalar()) return false;
   out = n.Scalar();
@@ -242,25 +268,26 @@ bool decode_string(const YAML::Node& n, std::string& out) {
 } // namespace
 
 bool YamlMap::real(const std::string& key, double& out, bool required) const {
-  return read_scalar(*this, key, out, required, "a real number", decode_real);
+  return read_scalar(*this, key, out, required, expecting("a real number", decode_real));
 }
 bool YamlMap::integer(const std::string& key, int& out, bool required) const {
-  return read_scalar(*this, key, out, required, "an integer", decode_int);
+  return read_scalar(*this, key, out, required, decode_int);
 }
 bool YamlMap::boolean(const std::string& key, bool& out, bool required) const {
-  return read_scalar(*this, key, out, required, "true or false", decode_boolean);
+  return read_scalar(*this, key, out, required, expecting("true or false", decode_boolean));
 }
 bool YamlMap::string(const std::string& key, std::string& out, bool required) const {
-  return read_scalar(*this, key, out, required, "a string", decode_string);
+  return read_scalar(*this, key, out, required, expecting("a string", decode_string));
 }
 bool YamlMap::reals(const std::string& key, std::vector<double>& out, bool required) const {
-  return read_list(*this, key, out, required, "real numbers", decode_real);
+  return read_list(*this, key, out, required, "real numbers",
+                   expecting("a real number", decode_real));
 }
 bool YamlMap::integers(const std::string& key, std::vector<int>& out, bool required) const {
   return read_list(*this, key, out, required, "integers", decode_int);
 }
 bool YamlMap::strings(const std::string& key, std::vector<std::string>& out, bool required) const {
-  return read_list(*this, key, out, required, "strings", decode_string);
+  return read_list(*this, key, out, required, "strings", expecting("a string", decode_string));
 }
 
 } // namespace bipot::input

@@ -52,7 +52,8 @@ public:
   Diagnostics& diag() const { return diag_; }
 
   /// Typed readers: return false (and record the problem) on a wrong type or when a required
-  /// key is missing; leave `out` untouched when an optional key is absent.
+  /// key is missing; leave `out` untouched when an optional key is absent. Integers must fit
+  /// in an int: a larger one is out of range, never wrapped.
   bool real(const std::string& key, double& out, bool required = false) const;
   bool integer(const std::string& key, int& out, bool required = false) const;
   bool boolean(const std::string& key, bool& out, bool required = false) const;
@@ -86,6 +87,10 @@ std::string read_text_file(const std::string& path);
 /// Decodes a scalar as a double / long / bool; false if it is not one.
 bool decode_real(const YAML::Node& n, double& out);
 bool decode_integer(const YAML::Node& n, long& out);
+/// Decodes a scalar as an int: "" on success, else the problem: "expected an integer, got
+/// 'x'", or for a whole number beyond an int (even beyond a long) "value 4294967297 is out of
+/// range for an integer [-2147483648, 2147483647]".
+std::string decode_int(const YAML::Node& n, int& out);
 bool decode_boolean(const YAML::Node& n, bool& out);
 /// The node's text for messages ("[...]" for a sequence, "{...}" for a map).
 std::string describe_node(const YAML::Node& n);

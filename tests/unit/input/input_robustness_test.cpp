@@ -75,5 +75,24 @@ TEST(InputRobustness, KeyGivenTwice) {
   EXPECT_EQ(problems_of(set_twice).size(), 1u);
 }
 
+TEST(InputRobustness, IntegersDoNotWrap) {
+  // 2^32 + 1 would become 1 as an int.
+  EXPECT_TRUE(reports(plane, "cells: [2]}", "cells: [4294967297]}",
+                      "in.yaml:6:33: mesh.blocks.y.cells[0]: value 4294967297 is out of range "
+                      "for an integer [-2147483648, 2147483647]"));
+  EXPECT_TRUE(reports(plane, "increments: 2", "increments: 4294967297",
+                      "in.yaml:13:17: stages[0].increments: value 4294967297 is out of range "
+                      "for an integer [-2147483648, 2147483647]"));
+  // Beyond a long too, and in a schema's parameters.
+  EXPECT_TRUE(has(problems_of(plane + "linear_solver: {max_iterations: 99999999999999999999}\n"),
+                  "in.yaml:19:17: linear_solver.max_iterations: value 99999999999999999999 "
+                  "is out of range for an integer [-2147483648, 2147483647]"));
+  EXPECT_TRUE(has(problems_of(plane + "linear_solver: {restart: 4294967297}\n"),
+                  "linear_solver.restart: value 4294967297 is out of range for an integer"));
+  // Not an integer at all, as before.
+  EXPECT_TRUE(reports(plane, "increments: 2", "increments: 2.5",
+                      "stages[0].increments: expected an integer, got '2.5'"));
+}
+
 } // namespace
 } // namespace bipot
