@@ -3,9 +3,11 @@
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/nearest_name.hpp"
+#include "fem/input/problem_reader.hpp"
 #include "materials/material_registry.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace bipot::input {
@@ -46,6 +48,31 @@ int component_index(const std::string& name, int dim, bool axisymmetric) {
   if (name == "y" || (axisymmetric && name == "z")) return 1;
   if (dim == 3 && name == "z") return 2;
   return -1;
+}
+
+// The cells a blocks mesh would have (0 while its description is inconsistent), in floating
+// point: three int counts multiply beyond any integer type.
+double block_mesh_cells(const MeshSpec& mesh, int dim) {
+  std::vector<const AxisSegments*> axes = {&mesh.x, &mesh.y};
+  if (dim == 3) axes.push_back(&mesh.z);
+  std::vector<std::size_t> segments;
+  std::size_t blocks = 1;
+  for (const AxisSegments* a : axes) {
+    if (a->breaks.size() < 2 || a->cells.size() != a->breaks.size() - 1) return 0;
+    segments.push_back(a->cells.size());
+    blocks *= a->cells.size();
+  }
+  if (mesh.block_regions.size() != blocks) return 0;
+  double cells = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    if (mesh.block_regions[b].empty()) continue; // a hole
+    double in_block = 1;
+    for (std::size_t i = 0, rest = b; i < axes.size(); rest /= segments[i], ++i)
+      in_block *= axes[i]->cells[rest % segments[i]];
+    cells += in_block;
+  }
+  const bool simplices = mesh.cell == "tri3" || mesh.cell == "tri6" || mesh.cell == "tet4";
+  return cells * (simplices ? (dim == 3 ? 6 : 2) : 1);
 }
 
 } // namespace
@@ -122,6 +149,13 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
       b.error("regions", "expected " + std::to_string(blocks) +
                              " region names (one per block, x fastest), got " +
                              std::to_string(mesh.block_regions.size()));
+    const double cells = block_mesh_cells(mesh, dim);
+    if (cells > max_block_mesh_cells) {
+      char count[32];
+      std::snprintf(count, sizeof count, cells < 1e18 ? "%.0f" : "%.3g", cells);
+      m.error("blocks", "the mesh would have " + std::string(count) + " cells, more than the " +
+                            std::to_string(max_block_mesh_cells) + " accepted");
+    }
   }
   return mesh;
 }
@@ -276,8 +310,10 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
     st.where = top.diag().where(list[i], path);
     st.name = "stage" + std::to_string(i + 1);
     m.string("name", st.name);
-    if (m.integer("increments", st.increments) && st.increments < 1)
-      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, inf)");
+    if (m.integer("increments", st.increments) &&
+        (st.increments < 1 || st.increments > max_increments_per_stage))
+      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +
+                                std::to_string(max_increments_per_stage) + "]");
     if (m.real("duration", st.duration) && !(st.duration > 0))
       m.error("duration", "value must be > 0 s");
     m.boolean("reset_displacements", st.reset_displacements);

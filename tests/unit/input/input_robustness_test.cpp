@@ -94,5 +94,25 @@ TEST(InputRobustness, IntegersDoNotWrap) {
                       "stages[0].increments: expected an integer, got '2.5'"));
 }
 
+TEST(InputRobustness, AbsurdSizesAreRefused) {
+  EXPECT_TRUE(reports(plane, "increments: 2", "increments: 2000000000",
+                      "in.yaml:13:17: stages[0].increments: value 2000000000 is out of range [1, "
+                      "1000000]"));
+  EXPECT_NO_THROW(read_problem_text(replace(plane, "increments: 2", "increments: 1000000"), "a"));
+  // 4e16 cells: refused while reading, before any memory is allocated for them.
+  const std::string huge = replace(plane, "cells: [2, 2]}", "cells: [100000000, 100000000]}");
+  EXPECT_TRUE(reports(huge, "cells: [2]}", "cells: [200000000]}",
+                      "in.yaml:4:5: mesh.blocks: the mesh would have 40000000000000000 cells, "
+                      "more than the 200000000 accepted"));
+  // 1.0001e8 quads are accepted; as triangles they count twice, holes not at all.
+  const std::string edge = replace(replace(plane, "cells: [2, 2]}", "cells: [5000, 5000]}"),
+                                   "cells: [2]}", "cells: [10001]}");
+  EXPECT_NO_THROW(read_problem_text(edge, "in.yaml"));
+  const std::string triangles = replace(edge, "cell: quad4", "cell: tri3");
+  EXPECT_THROW(read_problem_text(triangles, "in.yaml"), InputError);
+  EXPECT_NO_THROW(
+      read_problem_text(replace(triangles, "[left, right]", "[left, \"\"]"), "in.yaml"));
+}
+
 } // namespace
 } // namespace bipot
