@@ -42,14 +42,6 @@ AxisSegments read_axis(const YamlMap& parent, const std::string& key) {
   return axis;
 }
 
-// In 2D, r and z are accepted as aliases of x and y (axisymmetric inputs read naturally).
-int component_index(const std::string& name, int dim, bool axisymmetric) {
-  if (name == "x" || (axisymmetric && name == "r")) return 0;
-  if (name == "y" || (axisymmetric && name == "z")) return 1;
-  if (dim == 3 && name == "z") return 2;
-  return -1;
-}
-
 // The cells a blocks mesh would have (0 while its description is inconsistent), in floating
 // point: three int counts multiply beyond any integer type.
 double block_mesh_cells(const MeshSpec& mesh, int dim) {
@@ -293,116 +285,18 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) 
   return out;
 }
 
-std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
-  std::vector<StageSpec> out;
-  const YAML::Node list = top.node("stages");
-  if (!list.IsSequence() || list.size() == 0) {
-    top.error("stages", "expected a non-empty list of stages");
-    return out;
-  }
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    StageSpec st;
-    const std::string path = index_path("stages", i);
-    YamlMap m(list[i], path, top.diag(),
-              {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-               "loads", "interface_gaps"});
-    if (!m.valid()) continue;
-    st.where = top.diag().where(list[i], path);
-    st.name = "stage" + std::to_string(i + 1);
-    m.string("name", st.name);
-    if (m.integer("increments", st.increments) &&
-        (st.increments < 1 || st.increments > max_increments_per_stage))
-      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +
-                                std::to_string(max_increments_per_stage) + "]");
-    if (m.real("duration", st.duration) && !(st.duration > 0))
-      m.error("duration", "value must be > 0 s");
-    m.boolean("reset_displacements", st.reset_displacements);
-    if (m.has("boundary_conditions")) {
-      const YAML::Node bcs = m.node("boundary_conditions");
-      if (!bcs.IsSequence()) m.error("boundary_conditions", "expected a list");
-      for (std::size_t j = 0; bcs.IsSequence() && j < bcs.size(); ++j) {
-        DirichletSpec bc;
-        YamlMap b(bcs[j], index_path(m.path("boundary_conditions"), j), top.diag(),
-                  {"set", "component", "value"});
-        if (!b.valid()) continue;
-        bc.where = b.where("set");
-        b.string("set", bc.set, true);
-        std::string comp;
-        if (b.string("component", comp, true) && b.has("component")) {
-          bc.component = component_index(comp, dim, dim == 2);
-          if (bc.component < 0)
-            b.error("component", "unknown component '" + comp +
-                                     "'; allowed: " + (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
-        }
-        b.real("value", bc.value);
-        st.boundary_conditions.push_back(bc);
-      }
-    }
-    if (m.has("loads")) {
-      const YAML::Node loads = m.node("loads");
-      if (!loads.IsSequence()) m.error("loads", "expected a list");
-      for (std::size_t j = 0; loads.IsSequence() && j < loads.size(); ++j) {
-        LoadSpec ld;
-        YamlMap l(loads[j], index_path(m.path("loads"), j), top.diag(), {"type", "set", "value"});
-        if (!l.valid()) continue;
-        ld.where = l.where("set");
-        std::string type;
-        l.string("type", type, true);
-        if (type == "pressure") {
-          ld.type = LoadSpec::Type::Pressure;
-          l.string("set", ld.set, true);
-          l.real("value", ld.pressure, true);
-        } else if (type == "traction") {
-          ld.type = LoadSpec::Type::Traction;
-          l.string("set", ld.set, true);
-          if (l.reals("value", ld.traction, true) && l.has("value") &&
-              static_cast<int>(ld.traction.size()) != dim)
-            l.error("value", "expected " + std::to_string(dim) + " traction components (kPa)");
-        } else if (type == "gravity") {
-          ld.type = LoadSpec::Type::Gravity;
-          ld.where = l.where("type");
-          if (l.has("set") || l.has("value"))
-            l.error("type", "gravity takes no set or value: it uses each material's unit_weight");
-        } else if (!type.empty()) {
-          l.error("type", "unknown load type '" + type + "'; allowed: pressure, traction, gravity");
-        }
-        st.loads.push_back(ld);
-      }
-    }
-    if (m.has("interface_gaps")) {
-      const YAML::Node gaps = m.node("interface_gaps");
-      if (!gaps.IsSequence()) m.error("interface_gaps", "expected a list");
-      for (std::size_t j = 0; gaps.IsSequence() && j < gaps.size(); ++j) {
-        InterfaceGapSpec gap;
-        YamlMap g(gaps[j], index_path(m.path("interface_gaps"), j), top.diag(),
-                  {"interface", "value"});
-        if (!g.valid()) continue;
-        gap.where = g.where("interface");
-        g.string("interface", gap.interface, true);
-        g.real("value", gap.value, true);
-        st.interface_gaps.push_back(gap);
-      }
-    }
-    out.push_back(std::move(st));
-  }
-  return out;
-}
-
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
   std::vector<InterfaceSpec> out;
-  const YAML::Node list = top.node("interfaces");
-  if (!list.IsSequence()) {
-    top.error("interfaces", "expected a list of {name, between | facet_sets, law, parameters}");
-    return out;
-  }
   const auto& laws = contact::interface_laws();
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    InterfaceSpec spec;
-    const std::string path = index_path("interfaces", i);
-    YamlMap m(list[i], path, top.diag(),
-              {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"});
+  const auto entries =
+      list_entries(top, "interfaces",
+                   {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"},
+                   "expected a list of {name, between | facet_sets, law, parameters}");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const YamlMap& m = entries[i];
     if (!m.valid()) continue;
-    spec.where = top.diag().where(list[i], path);
+    InterfaceSpec spec;
+    spec.where = m.where();
     spec.name = "interface" + std::to_string(i + 1);
     m.string("name", spec.name);
     m.strings("between", spec.between);

@@ -207,6 +207,20 @@ void YamlMap::error(const std::string& key, const std::string& message) const {
   diag_.error_at(where(key), message);
 }
 
+std::vector<YamlMap> list_entries(const YamlMap& parent, const std::string& key,
+                                  const std::vector<std::string>& allowed,
+                                  const std::string& expected) {
+  std::vector<YamlMap> entries;
+  const YAML::Node list = parent.node(key);
+  if (!list.IsSequence()) {
+    parent.error(key, expected);
+    return entries;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i)
+    entries.emplace_back(list[i], index_path(parent.path(key), i), parent.diag(), allowed);
+  return entries;
+}
+
 namespace {
 // Decoders return "" or what is wrong with the node.
 template <class Decode, class T>

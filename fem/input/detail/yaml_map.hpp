@@ -49,6 +49,8 @@ public:
   const YAML::Node& self() const { return node_; }
   std::string path(const std::string& key) const { return join_path(path_, key); }
   std::string where(const std::string& key) const;
+  /// "file:line:col: path" of the map itself.
+  std::string where() const { return diag_.where(node_, path_); }
   Diagnostics& diag() const { return diag_; }
 
   /// Typed readers: return false (and record the problem) on a wrong type or when a required
@@ -72,6 +74,13 @@ private:
   Diagnostics& diag_;
   bool valid_ = false;
 };
+
+/// The entries of the list parent[key], each read as a map of the `allowed` keys (one that is
+/// not a map is reported and not valid(), so that indices stay the list's). If parent[key] is
+/// not a list, records `expected` there and returns none.
+std::vector<YamlMap> list_entries(const YamlMap& parent, const std::string& key,
+                                  const std::vector<std::string>& allowed,
+                                  const std::string& expected);
 
 /// Parses YAML text; throws InputError "file:line:col: YAML syntax error: ..." or
 /// "file: the input file is empty".

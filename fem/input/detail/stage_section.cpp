@@ -1,0 +1,111 @@
+// The `stages` section: per stage, its boundary conditions, loads and interface gaps.
+#include "fem/input/detail/sections.hpp"
+
+#include "fem/input/problem_reader.hpp"
+
+namespace bipot::input {
+
+namespace {
+
+// In 2D, r and z are accepted as aliases of x and y (axisymmetric inputs read naturally).
+int component_index(const std::string& name, int dim, bool axisymmetric) {
+  if (name == "x" || (axisymmetric && name == "r")) return 0;
+  if (name == "y" || (axisymmetric && name == "z")) return 1;
+  if (dim == 3 && name == "z") return 2;
+  return -1;
+}
+
+void read_boundary_conditions(const YamlMap& m, int dim, StageSpec& st) {
+  for (const YamlMap& b :
+       list_entries(m, "boundary_conditions", {"set", "component", "value"}, "expected a list")) {
+    if (!b.valid()) continue;
+    DirichletSpec bc;
+    bc.where = b.where("set");
+    b.string("set", bc.set, true);
+    std::string comp;
+    if (b.string("component", comp, true) && b.has("component")) {
+      bc.component = component_index(comp, dim, dim == 2);
+      if (bc.component < 0)
+        b.error("component", "unknown component '" + comp +
+                                 "'; allowed: " + (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
+    }
+    b.real("value", bc.value);
+    st.boundary_conditions.push_back(bc);
+  }
+}
+
+void read_loads(const YamlMap& m, int dim, StageSpec& st) {
+  for (const YamlMap& l : list_entries(m, "loads", {"type", "set", "value"}, "expected a list")) {
+    if (!l.valid()) continue;
+    LoadSpec ld;
+    ld.where = l.where("set");
+    std::string type;
+    l.string("type", type, true);
+    if (type == "pressure") {
+      ld.type = LoadSpec::Type::Pressure;
+      l.string("set", ld.set, true);
+      l.real("value", ld.pressure, true);
+    } else if (type == "traction") {
+      ld.type = LoadSpec::Type::Traction;
+      l.string("set", ld.set, true);
+      if (l.reals("value", ld.traction, true) && l.has("value") &&
+          static_cast<int>(ld.traction.size()) != dim)
+        l.error("value", "expected " + std::to_string(dim) + " traction components (kPa)");
+    } else if (type == "gravity") {
+      ld.type = LoadSpec::Type::Gravity;
+      ld.where = l.where("type");
+      if (l.has("set") || l.has("value"))
+        l.error("type", "gravity takes no set or value: it uses each material's unit_weight");
+    } else if (!type.empty()) {
+      l.error("type", "unknown load type '" + type + "'; allowed: pressure, traction, gravity");
+    }
+    st.loads.push_back(ld);
+  }
+}
+
+void read_interface_gaps(const YamlMap& m, StageSpec& st) {
+  for (const YamlMap& g :
+       list_entries(m, "interface_gaps", {"interface", "value"}, "expected a list")) {
+    if (!g.valid()) continue;
+    InterfaceGapSpec gap;
+    gap.where = g.where("interface");
+    g.string("interface", gap.interface, true);
+    g.real("value", gap.value, true);
+    st.interface_gaps.push_back(gap);
+  }
+}
+
+} // namespace
+
+std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
+  std::vector<StageSpec> out;
+  const std::string expected = "expected a non-empty list of stages";
+  if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
+    top.error("stages", expected);
+  const auto entries = list_entries(top, "stages",
+                                    {"name", "increments", "duration", "reset_displacements",
+                                     "boundary_conditions", "loads", "interface_gaps"},
+                                    expected);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const YamlMap& m = entries[i];
+    if (!m.valid()) continue;
+    StageSpec st;
+    st.where = m.where();
+    st.name = "stage" + std::to_string(i + 1);
+    m.string("name", st.name);
+    if (m.integer("increments", st.increments) &&
+        (st.increments < 1 || st.increments > max_increments_per_stage))
+      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +
+                                std::to_string(max_increments_per_stage) + "]");
+    if (m.real("duration", st.duration) && !(st.duration > 0))
+      m.error("duration", "value must be > 0 s");
+    m.boolean("reset_displacements", st.reset_displacements);
+    if (m.has("boundary_conditions")) read_boundary_conditions(m, dim, st);
+    if (m.has("loads")) read_loads(m, dim, st);
+    if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    out.push_back(std::move(st));
+  }
+  return out;
+}
+
+} // namespace bipot::input
