@@ -1,21 +1,31 @@
 // The `stages` section: per stage, its boundary conditions, loads and interface gaps.
 #include "fem/input/detail/sections.hpp"
 
+#include "fem/core/nearest_name.hpp"
 #include "fem/input/problem_reader.hpp"
+
+#include <algorithm>
 
 namespace bipot::input {
 
+// In axisymmetry r and z name x and y (r is x, z is y); x and y are accepted too.
+const std::vector<std::string>& component_names(const std::string& kinematics) {
+  static const std::vector<std::string> plane = {"x", "y"}, axisymmetric = {"r", "z"},
+                                        three_d = {"x", "y", "z"};
+  return kinematics == "three_d" ? three_d : kinematics == "axisymmetric" ? axisymmetric : plane;
+}
+
 namespace {
 
-// In 2D, r and z are accepted as aliases of x and y (axisymmetric inputs read naturally).
-int component_index(const std::string& name, int dim, bool axisymmetric) {
-  if (name == "x" || (axisymmetric && name == "r")) return 0;
-  if (name == "y" || (axisymmetric && name == "z")) return 1;
-  if (dim == 3 && name == "z") return 2;
+int component_index(const std::string& name, const std::string& kinematics) {
+  const auto& names = component_names(kinematics);
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  if (kinematics == "axisymmetric" && (name == "x" || name == "y")) return name == "x" ? 0 : 1;
   return -1;
 }
 
-void read_boundary_conditions(const YamlMap& m, int dim, StageSpec& st) {
+void read_boundary_conditions(const YamlMap& m, const std::string& kinematics, StageSpec& st) {
   for (const YamlMap& b :
        list_entries(m, "boundary_conditions", {"set", "component", "value"}, "expected a list")) {
     if (!b.valid()) continue;
@@ -24,10 +34,11 @@ void read_boundary_conditions(const YamlMap& m, int dim, StageSpec& st) {
     b.string("set", bc.set, true);
     std::string comp;
     if (b.string("component", comp, true) && b.has("component")) {
-      bc.component = component_index(comp, dim, dim == 2);
+      bc.component = component_index(comp, kinematics);
       if (bc.component < 0)
-        b.error("component", "unknown component '" + comp +
-                                 "'; allowed: " + (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
+        b.error("component", "unknown component '" + comp + "' in " + kinematics +
+                                 "; allowed: " + join_names(component_names(kinematics)) +
+                                 (kinematics == "axisymmetric" ? " (or x, y)" : ""));
     }
     b.real("value", bc.value);
     st.boundary_conditions.push_back(bc);
@@ -77,7 +88,7 @@ void read_interface_gaps(const YamlMap& m, StageSpec& st) {
 
 } // namespace
 
-std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics) {
   std::vector<StageSpec> out;
   const std::string expected = "expected a non-empty list of stages";
   if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
@@ -100,8 +111,8 @@ std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
     if (m.real("duration", st.duration) && !(st.duration > 0))
       m.error("duration", "value must be > 0 s");
     m.boolean("reset_displacements", st.reset_displacements);
-    if (m.has("boundary_conditions")) read_boundary_conditions(m, dim, st);
-    if (m.has("loads")) read_loads(m, dim, st);
+    if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
+    if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
     out.push_back(std::move(st));
   }

@@ -114,5 +114,23 @@ TEST(InputRobustness, AbsurdSizesAreRefused) {
       read_problem_text(replace(triangles, "[left, right]", "[left, \"\"]"), "in.yaml"));
 }
 
+TEST(InputRobustness, ComponentsOfTheKinematics) {
+  EXPECT_TRUE(reports(plane, "component: x", "component: z",
+                      "in.yaml:16:32: stages[0].boundary_conditions[1].component: unknown "
+                      "component 'z' in plane_strain; allowed: x, y"));
+  EXPECT_TRUE(reports(plane, "component: x", "component: r",
+                      "unknown component 'r' in plane_strain; allowed: x, y"));
+  // Axisymmetry names them r, z and accepts x, y.
+  const std::string axi = replace(plane, "plane_strain", "axisymmetric");
+  EXPECT_TRUE(problems_of(axi).empty());
+  const std::string rz =
+      replace(replace(axi, "component: x", "component: r"), "component: y", "component: z");
+  const ProblemSpec spec = read_problem_text(rz, "in.yaml");
+  EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1);
+  EXPECT_EQ(spec.stages[0].boundary_conditions[1].component, 0);
+  EXPECT_TRUE(reports(axi, "component: x", "component: w",
+                      "unknown component 'w' in axisymmetric; allowed: r, z (or x, y)"));
+}
+
 } // namespace
 } // namespace bipot
