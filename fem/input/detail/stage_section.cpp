@@ -25,13 +25,23 @@ int component_index(const std::string& name, const std::string& kinematics) {
   return -1;
 }
 
+// A condition read completely, kept to find a later one of the stage that fixes the same set
+// and component to another value (which would silently win).
+struct FixedComponent {
+  std::string set;
+  int component = 0;
+  double value = 0;
+  std::string value_text, entry; ///< entry: "stages[0].boundary_conditions[1] (line 16)"
+};
+
 void read_boundary_conditions(const YamlMap& m, const std::string& kinematics, StageSpec& st) {
+  std::vector<FixedComponent> fixed;
   for (const YamlMap& b :
        list_entries(m, "boundary_conditions", {"set", "component", "value"}, "expected a list")) {
     if (!b.valid()) continue;
     DirichletSpec bc;
     bc.where = b.where("set");
-    b.string("set", bc.set, true);
+    bool complete = b.string("set", bc.set, true) && b.has("set");
     std::string comp;
     if (b.string("component", comp, true) && b.has("component")) {
       bc.component = component_index(comp, kinematics);
@@ -40,8 +50,17 @@ void read_boundary_conditions(const YamlMap& m, const std::string& kinematics, S
                                  "; allowed: " + join_names(component_names(kinematics)) +
                                  (kinematics == "axisymmetric" ? " (or x, y)" : ""));
     }
-    b.real("value", bc.value);
+    complete = complete && bc.component >= 0 && b.real("value", bc.value);
     st.boundary_conditions.push_back(bc);
+    if (!complete) continue;
+    const FixedComponent f{bc.set, bc.component, bc.value,
+                           b.has("value") ? b.node("value").Scalar() : "0", b.path_and_line()};
+    for (const FixedComponent& other : fixed)
+      if (other.set == f.set && other.component == f.component && other.value != f.value)
+        b.error("value", "component " + comp + " of set '" + f.set + "' is fixed to " +
+                             f.value_text + " here and to " + other.value_text + " by " +
+                             other.entry + " in the same stage");
+    fixed.push_back(f);
   }
 }
 

@@ -199,6 +199,10 @@ std::string YamlMap::where(const std::string& key) const {
   return has(key) ? diag_.where(node(key), path(key)) : diag_.where(node_, path(key));
 }
 
+std::string YamlMap::path_and_line() const {
+  return path_ + " (line " + std::to_string(node_.Mark().line + 1) + ")";
+}
+
 void YamlMap::missing(const std::string& key, const std::string& doc) const {
   diag_.error(node_, path(key), "missing required key" + (doc.empty() ? "" : " (" + doc + ")"));
 }

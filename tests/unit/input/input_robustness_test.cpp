@@ -132,5 +132,20 @@ TEST(InputRobustness, ComponentsOfTheKinematics) {
                       "unknown component 'w' in axisymmetric; allowed: r, z (or x, y)"));
 }
 
+TEST(InputRobustness, OneSetFixedTwiceInAStage) {
+  const std::string twice = replace(plane, "      - {set: left, component: x, value: 0}\n",
+                                    "      - {set: left, component: x, value: 0}\n"
+                                    "      - {set: left, component: x, value: 1.0e-3}\n");
+  EXPECT_TRUE(has(problems_of(twice),
+                  "in.yaml:17:42: stages[0].boundary_conditions[2].value: component x of set "
+                  "'left' is fixed to 1.0e-3 here and to 0 by "
+                  "stages[0].boundary_conditions[1] (line 16) in the same stage"));
+  // The same value twice is harmless, and each stage lists its own conditions.
+  EXPECT_TRUE(problems_of(replace(twice, "value: 1.0e-3", "value: 0.0")).empty());
+  EXPECT_TRUE(problems_of(plane + "  - name: move\n    boundary_conditions:\n"
+                                  "      - {set: left, component: x, value: 1.0e-3}\n")
+                  .empty());
+}
+
 } // namespace
 } // namespace bipot
