@@ -288,6 +288,8 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) 
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
   std::vector<InterfaceSpec> out;
   const auto& laws = contact::interface_laws();
+  UniqueNames names("interface", "each interface needs its own, for its output files "
+                                 "interface_<name>.csv and interface_<name>.pvd");
   const auto entries =
       list_entries(top, "interfaces",
                    {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"},
@@ -297,8 +299,7 @@ std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
     if (!m.valid()) continue;
     InterfaceSpec spec;
     spec.where = m.where();
-    spec.name = "interface" + std::to_string(i + 1);
-    m.string("name", spec.name);
+    spec.name = names.read(m, i);
     m.strings("between", spec.between);
     m.strings("facet_sets", spec.facet_sets);
     if (m.has("between") == m.has("facet_sets"))

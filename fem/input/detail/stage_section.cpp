@@ -112,6 +112,8 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
   const std::string expected = "expected a non-empty list of stages";
   if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
     top.error("stages", expected);
+  UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
+                             "name stages");
   const auto entries = list_entries(top, "stages",
                                     {"name", "increments", "duration", "reset_displacements",
                                      "boundary_conditions", "loads", "interface_gaps"},
@@ -121,8 +123,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (!m.valid()) continue;
     StageSpec st;
     st.where = m.where();
-    st.name = "stage" + std::to_string(i + 1);
-    m.string("name", st.name);
+    st.name = names.read(m, i);
     if (m.integer("increments", st.increments) &&
         (st.increments < 1 || st.increments > max_increments_per_stage))
       m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +

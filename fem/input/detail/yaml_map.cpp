@@ -225,6 +225,16 @@ std::vector<YamlMap> list_entries(const YamlMap& parent, const std::string& key,
   return entries;
 }
 
+std::string UniqueNames::read(const YamlMap& entry, std::size_t index) {
+  std::string name = what_ + std::to_string(index + 1);
+  entry.string("name", name);
+  const auto [at, inserted] = first_.emplace(name, entry.path_and_line());
+  if (!inserted)
+    entry.error("name",
+                what_ + " name '" + name + "' is already the name of " + at->second + "; " + why_);
+  return name;
+}
+
 namespace {
 // Decoders return "" or what is wrong with the node.
 template <class Decode, class T>

@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,21 @@ private:
 std::vector<YamlMap> list_entries(const YamlMap& parent, const std::string& key,
                                   const std::vector<std::string>& allowed,
                                   const std::string& expected);
+
+/// The names of a list's entries (stages, interfaces), which must differ: a name given again
+/// is reported at that entry's `name` key, with the entry that has it already.
+class UniqueNames {
+public:
+  /// `what` ("stage") names the entries in messages; `why` says why names must differ.
+  UniqueNames(std::string what, std::string why) : what_(std::move(what)), why_(std::move(why)) {}
+  /// The `name` of the list's entry `index` (0-based), by default `what` and index + 1
+  /// ("stage2"), checked against the names before it.
+  std::string read(const YamlMap& entry, std::size_t index);
+
+private:
+  std::string what_, why_;
+  std::map<std::string, std::string> first_; ///< name -> "stages[0] (line 11)"
+};
 
 /// Parses YAML text; throws InputError "file:line:col: YAML syntax error: ..." or
 /// "file: the input file is empty".

@@ -147,5 +147,22 @@ TEST(InputRobustness, OneSetFixedTwiceInAStage) {
                   .empty());
 }
 
+TEST(InputRobustness, NamesThatMustDiffer) {
+  const std::string interfaces =
+      "interfaces:\n"
+      "  - {name: joint, between: [left, right], law: coulomb_signorini}\n"
+      "  - {name: joint, between: [left, right], law: perfect_bonding}\n";
+  EXPECT_TRUE(reports(plane, "stages:\n", interfaces + "stages:\n",
+                      "in.yaml:13:12: interfaces[1].name: interface name 'joint' is already the "
+                      "name of interfaces[0] (line 12); each interface needs its own, for its "
+                      "output files interface_<name>.csv and interface_<name>.pvd"));
+  EXPECT_TRUE(has(problems_of(plane + "  - name: load\n"),
+                  "in.yaml:19:11: stages[1].name: stage name 'load' is already the name of "
+                  "stages[0] (line 12)"));
+  // A default name ("stage2") counts too.
+  EXPECT_TRUE(reports(plane + "  - increments: 1\n", "name: load", "name: stage2",
+                      "stages[1].name: stage name 'stage2' is already the name of stages[0]"));
+}
+
 } // namespace
 } // namespace bipot
