@@ -3,6 +3,8 @@
 // one DOF, two outputs with one name, an endless input file) is an error at its line.
 #include "tests/unit/input/input_test_utils.hpp"
 
+#include "fem/input/condition_checks.hpp"
+
 #include <filesystem>
 #include <fstream>
 
@@ -145,6 +147,23 @@ TEST(InputRobustness, OneSetFixedTwiceInAStage) {
   EXPECT_TRUE(problems_of(plane + "  - name: move\n    boundary_conditions:\n"
                                   "      - {set: left, component: x, value: 1.0e-3}\n")
                   .empty());
+}
+
+TEST(InputRobustness, TwoSetsSharingANodeFixedDifferently) {
+  // bottom and left share the corner node (0, 0): x = 1 mm there by one, 0 by the other.
+  const std::string text = replace(plane, "      - {set: bottom, component: y, value: 0}\n",
+                                   "      - {set: bottom, component: y, value: 0}\n"
+                                   "      - {set: bottom, component: x, value: 1.0e-3}\n");
+  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  const auto p = conflicting_conditions(model.spec, model.mesh);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_TRUE(has(p, "in.yaml:17:15: stages[0].boundary_conditions[2].set: node 0 at (0, 0) of "
+                     "set 'left' is also in set 'bottom', whose condition (in.yaml:16:15: "
+                     "stages[0].boundary_conditions[1].set) fixes its component x to 0.001 in "
+                     "the same stage, this one to 0"));
+  // Equal values on the shared node are consistent.
+  const Model same = build_model(read_problem_text(replace(text, "1.0e-3", "0"), "in.yaml"));
+  EXPECT_TRUE(conflicting_conditions(same.spec, same.mesh).empty());
 }
 
 TEST(InputRobustness, NamesThatMustDiffer) {
