@@ -68,6 +68,7 @@ void print_usage() {
                "                             file's top-level keys\n"
                "  bipot COMMAND --help       help on a command\n\n"
                "Run in parallel with: mpiexec -n N bipot run FILE.yaml\n"
+               "Kokkos options (--kokkos-threads=N, --kokkos-help, ...) are passed on to Kokkos.\n"
                "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure, 4 other error.\n";
 }
 
