@@ -6,7 +6,8 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${BUILD_DIR:-$root/build}"
 build_type="${BUILD_TYPE:-Release}"
-jobs="${JOBS:-$(nproc)}"
+source "$root/scripts/env.sh"
+jobs="${JOBS:-$BIPOT_JOBS}"
 
 # trilinos-all-dev rather than the split packages: find_package(Trilinos) needs every package's
 # config file. Its exported targets reference scotch/ptscotch, VTK's reference libXi/libXxf86vm.

@@ -9,6 +9,7 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
+#include "fem/input/condition_checks.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "fem/linalg/linear_solver.hpp"
@@ -47,6 +48,14 @@ std::string one_file(const std::vector<std::string>& args, const char* usage) {
   return files[0];
 }
 
+// The model of `file`, also checked for what needs its mesh and build_model does not check.
+Model checked_model(const std::string& file) {
+  Model model = build_model(read_problem_file(file));
+  const auto problems = conflicting_conditions(model.spec, model.mesh);
+  if (!problems.empty()) throw InputError(problems);
+  return model;
+}
+
 } // namespace
 
 void print_usage() {
@@ -59,6 +68,7 @@ void print_usage() {
                "                             file's top-level keys\n"
                "  bipot COMMAND --help       help on a command\n\n"
                "Run in parallel with: mpiexec -n N bipot run FILE.yaml\n"
+               "Kokkos options (--kokkos-threads=N, --kokkos-help, ...) are passed on to Kokkos.\n"
                "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure, 4 other error.\n";
 }
 
@@ -72,7 +82,7 @@ int check_command(const std::vector<std::string>& args) {
   const std::string file = one_file(args, "bipot check FILE.yaml");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = build_model(read_problem_file(file));
+    const Model model = checked_model(file);
     if (root())
       std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
                 << model.mesh.num_cells() << " cells, " << model.spec.stages.size() << " stage"
@@ -101,7 +111,7 @@ int run_command(const std::vector<std::string>& args) {
   const std::string file = one_file(args, "bipot run FILE.yaml [--quiet]");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = build_model(read_problem_file(file));
+    const Model model = checked_model(file);
     ResultWriter writer(model, mpi_rank(), mpi_size());
     StaticAnalysis analysis(model, {}, &writer);
     if (root() && !quiet)

@@ -1,11 +1,100 @@
 #include "apps/common/app_support.hpp"
 
 #include "fem/linalg/communicator.hpp"
+#include "fem/linalg/parallel_environment.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
 namespace bipot::app {
+
+namespace {
+
+// The Kokkos 3.4 options an app passes on: without a value, and with an integer value
+// (num-devices: "N" or "N,M"); the tools options take any text.
+const std::vector<std::string> kokkos_flags = {"--kokkos-help", "--kokkos-disable-warnings",
+                                               "--kokkos-tune-internals"};
+const std::vector<std::string> kokkos_integers = {"--kokkos-threads", "--kokkos-numa",
+                                                  "--kokkos-device-id", "--kokkos-num-devices"};
+const std::vector<std::string> kokkos_texts = {"--kokkos-tools-library", "--kokkos-tools-args"};
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// A count Kokkos reads with std::stoi: digits only, at most 9 of them (no overflow).
+bool is_count(const std::string& s) {
+  return !s.empty() && s.size() <= 9 &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+// "" if Kokkos can take `arg`, else why not.
+std::string kokkos_option_problem(const std::string& arg) {
+  const auto eq = arg.find('=');
+  const std::string name = arg.substr(0, eq);
+  const std::string value = eq == std::string::npos ? "" : arg.substr(eq + 1);
+  if (contains(kokkos_flags, name)) return eq == std::string::npos ? "" : "takes no value";
+  if (contains(kokkos_texts, name)) return eq == std::string::npos ? "expects =TEXT" : "";
+  if (!contains(kokkos_integers, name)) {
+    std::string known;
+    for (const auto* list : {&kokkos_flags, &kokkos_integers, &kokkos_texts})
+      for (const auto& k : *list)
+        known += (known.empty() ? "" : ", ") + k;
+    return "unknown Kokkos option; known: " + known;
+  }
+  const auto comma = value.find(',');
+  const bool ok = name == "--kokkos-num-devices" && comma != std::string::npos
+                      ? is_count(value.substr(0, comma)) && is_count(value.substr(comma + 1))
+                      : is_count(value);
+  return ok ? "" : "expects =N, a whole number from 0 to 999999999";
+}
+
+// Errors before MPI starts: print once per job, from the launcher's rank 0.
+bool launcher_rank_zero() {
+  for (const char* var : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+    if (const char* rank = std::getenv(var)) return std::string(rank) == "0";
+  return true;
+}
+
+} // namespace
+
+std::unique_ptr<ParallelEnvironment>
+start_parallel(int argc, char** argv, const std::string& program, std::vector<std::string>& args) {
+  // Kokkos may keep pointers into its argv: storage for the whole run.
+  static std::vector<std::string> kokkos_args;
+  static std::vector<char*> kokkos_argv;
+  kokkos_args = {argc > 0 ? argv[0] : program};
+  args.clear();
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--kokkos-", 0) != 0) {
+      args.push_back(arg);
+      continue;
+    }
+    const std::string problem = kokkos_option_problem(arg);
+    if (!problem.empty()) {
+      if (launcher_rank_zero()) std::cerr << program << ": " << arg << ": " << problem << "\n";
+      return nullptr;
+    }
+    kokkos_args.push_back(arg);
+  }
+  kokkos_argv.clear();
+  for (auto& a : kokkos_args)
+    kokkos_argv.push_back(a.data());
+  kokkos_argv.push_back(nullptr);
+  int kokkos_argc = static_cast<int>(kokkos_args.size());
+  char** kokkos_argv_ptr = kokkos_argv.data();
+  try {
+    return std::make_unique<ParallelEnvironment>(kokkos_argc, kokkos_argv_ptr);
+  } catch (const std::exception& e) {
+    if (launcher_rank_zero())
+      std::cerr << program << ": cannot start MPI and Kokkos: " << e.what() << "\n";
+    return nullptr;
+  }
+}
 
 int report_error(const std::exception& e, int code, const std::string& program) {
   if (mpi_rank() != 0) return code;

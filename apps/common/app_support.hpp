@@ -1,11 +1,17 @@
 #pragma once
-/// What the command-line apps share: the exit-code convention and how errors are printed,
-/// and the peak memory they report.
+/// What the command-line apps share: how they start MPI and Kokkos from the command line,
+/// the exit-code convention and how errors are printed, and the peak memory they report.
 
 #include "fem/core/error.hpp"
 
 #include <exception>
+#include <memory>
 #include <string>
+#include <vector>
+
+namespace bipot {
+class ParallelEnvironment;
+}
 
 namespace bipot::app {
 
@@ -29,6 +35,15 @@ template <class F> int run_guarded(const std::string& program, F&& body) {
     return report_error(e, kOtherError, program);
   }
 }
+
+/// Starts MPI and Kokkos (a ParallelEnvironment) with the command line's --kokkos-* options
+/// only, each checked first: Kokkos would also take the app's --help and its unprefixed
+/// aliases (--threads=...), and a malformed value makes it throw from its initialisation,
+/// which aborts the process. `args` receives the other arguments (argv[0] excluded). Returns
+/// nullptr after printing "<program>: ..." to stderr if an option is malformed or unknown or
+/// Kokkos does not start; the caller then exits with kUsage.
+std::unique_ptr<ParallelEnvironment>
+start_parallel(int argc, char** argv, const std::string& program, std::vector<std::string>& args);
 
 /// Peak resident memory of this process (VmHWM), MB; 0 where /proc is not available.
 double peak_memory_mb();

@@ -126,9 +126,10 @@ template <class F> int guarded(F&& body) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bipot::ParallelEnvironment env(argc, argv);
-  const bool root = env.rank() == 0;
-  std::vector<std::string> args(argv + 1, argv + argc);
+  std::vector<std::string> args;
+  const auto env = app::start_parallel(argc, argv, "pile_pullout", args);
+  if (!env) return app::kUsage;
+  const bool root = env->rank() == 0;
   if (args.empty()) {
     if (root) usage();
     return 1;

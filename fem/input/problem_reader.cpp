@@ -76,7 +76,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
     validate(contact::contact_solvers().schema(spec.contact_solver.type),
              spec.contact_solver.parameters);
   if (top.has("stages"))
-    spec.stages = input::read_stages(top, dim);
+    spec.stages = input::read_stages(top, spec.kinematics);
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);

@@ -7,6 +7,13 @@
 
 namespace bipot {
 
+/// Limits that refuse an absurd input at `check` with a clear message, before it exhausts
+/// memory or time (docs/input_reference.md, "Limits").
+constexpr int max_increments_per_stage = 1000000;
+/// Cells of a `blocks` mesh, counted after quads are split into triangles (2 each) and
+/// hexahedra into tetrahedra (6 each).
+constexpr long max_block_mesh_cells = 200000000;
+
 /// Parses `path`, checks every key, type and range it can without the mesh, and returns the
 /// problem. Throws InputError listing every problem as "file:line:col: key.path: message";
 /// a YAML syntax error is reported with its line and column.

@@ -3,9 +3,11 @@
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/nearest_name.hpp"
+#include "fem/input/problem_reader.hpp"
 #include "materials/material_registry.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace bipot::input {
@@ -40,12 +42,29 @@ AxisSegments read_axis(const YamlMap& parent, const std::string& key) {
   return axis;
 }
 
-// In 2D, r and z are accepted as aliases of x and y (axisymmetric inputs read naturally).
-int component_index(const std::string& name, int dim, bool axisymmetric) {
-  if (name == "x" || (axisymmetric && name == "r")) return 0;
-  if (name == "y" || (axisymmetric && name == "z")) return 1;
-  if (dim == 3 && name == "z") return 2;
-  return -1;
+// The cells a blocks mesh would have (0 while its description is inconsistent), in floating
+// point: three int counts multiply beyond any integer type.
+double block_mesh_cells(const MeshSpec& mesh, int dim) {
+  std::vector<const AxisSegments*> axes = {&mesh.x, &mesh.y};
+  if (dim == 3) axes.push_back(&mesh.z);
+  std::vector<std::size_t> segments;
+  std::size_t blocks = 1;
+  for (const AxisSegments* a : axes) {
+    if (a->breaks.size() < 2 || a->cells.size() != a->breaks.size() - 1) return 0;
+    segments.push_back(a->cells.size());
+    blocks *= a->cells.size();
+  }
+  if (mesh.block_regions.size() != blocks) return 0;
+  double cells = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    if (mesh.block_regions[b].empty()) continue; // a hole
+    double in_block = 1;
+    for (std::size_t i = 0, rest = b; i < axes.size(); rest /= segments[i], ++i)
+      in_block *= axes[i]->cells[rest % segments[i]];
+    cells += in_block;
+  }
+  const bool simplices = mesh.cell == "tri3" || mesh.cell == "tri6" || mesh.cell == "tet4";
+  return cells * (simplices ? (dim == 3 ? 6 : 2) : 1);
 }
 
 } // namespace
@@ -62,6 +81,7 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
   if (m.has("sets")) {
     const YAML::Node sets = m.node("sets");
     if (!sets.IsMap()) m.error("sets", "expected a map: name -> {min: [...], max: [...]}");
+    report_duplicate_keys(sets, "mesh.sets", top.diag());
     for (const auto& kv : sets.IsMap() ? sets : YAML::Node()) {
       BoxSetSpec box;
       box.name = kv.first.Scalar();
@@ -121,6 +141,13 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
       b.error("regions", "expected " + std::to_string(blocks) +
                              " region names (one per block, x fastest), got " +
                              std::to_string(mesh.block_regions.size()));
+    const double cells = block_mesh_cells(mesh, dim);
+    if (cells > max_block_mesh_cells) {
+      char count[32];
+      std::snprintf(count, sizeof count, cells < 1e18 ? "%.0f" : "%.3g", cells);
+      m.error("blocks", "the mesh would have " + std::string(count) + " cells, more than the " +
+                            std::to_string(max_block_mesh_cells) + " accepted");
+    }
   }
   return mesh;
 }
@@ -133,6 +160,7 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
     diag.error(node, path, "expected a map of parameters, got " + describe_node(node));
     return params;
   }
+  report_duplicate_keys(node, path, diag);
   std::map<std::string, YAML::Node> key_nodes;
   for (const auto& kv : node) {
     const std::string key = kv.first.Scalar();
@@ -143,30 +171,31 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
     ParamValue value = v.IsScalar() ? ParamValue(v.Scalar()) : ParamValue(describe_node(v));
     if (spec) {
       double d = 0;
-      long i = 0;
+      int i = 0;
       bool b = false;
-      bool ok = true;
+      std::string problem;
+      const auto expect = [&](bool ok, const char* what) {
+        if (!ok) problem = std::string("expected ") + what + ", got " + describe_node(v);
+      };
       switch (spec->type) {
       case ParamType::Real:
-        ok = decode_real(v, d), value = d;
+        expect(decode_real(v, d), "a real number");
+        value = d;
         break;
-      case ParamType::Integer:
-        ok = decode_integer(v, i), value = i;
+      case ParamType::Integer: // consumers take an int: a larger value must not wrap
+        problem = decode_int(v, i);
+        value = static_cast<long>(i);
         break;
       case ParamType::Boolean:
-        ok = decode_boolean(v, b), value = b;
+        expect(decode_boolean(v, b), "true or false");
+        value = b;
         break;
       case ParamType::String:
-        ok = v.IsScalar();
+        expect(v.IsScalar(), "a string");
         break;
       }
-      if (!ok) {
-        const char* what = spec->type == ParamType::Integer   ? "an integer"
-                           : spec->type == ParamType::Real    ? "a real number"
-                           : spec->type == ParamType::Boolean ? "true or false"
-                                                              : "a string";
-        diag.error(kv.first, join_path(path, key),
-                   std::string("expected ") + what + ", got " + describe_node(v));
+      if (!problem.empty()) {
+        diag.error(kv.first, join_path(path, key), problem);
         continue;
       }
     }
@@ -194,6 +223,7 @@ std::vector<MaterialSpec> read_materials(const YamlMap& top) {
     return out;
   }
   const auto& registry = materials();
+  report_duplicate_keys(node, "materials", top.diag());
   for (const auto& kv : node) {
     MaterialSpec mat;
     mat.region = kv.first.Scalar();
@@ -255,116 +285,21 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) 
   return out;
 }
 
-std::vector<StageSpec> read_stages(const YamlMap& top, int dim) {
-  std::vector<StageSpec> out;
-  const YAML::Node list = top.node("stages");
-  if (!list.IsSequence() || list.size() == 0) {
-    top.error("stages", "expected a non-empty list of stages");
-    return out;
-  }
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    StageSpec st;
-    const std::string path = index_path("stages", i);
-    YamlMap m(list[i], path, top.diag(),
-              {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-               "loads", "interface_gaps"});
-    if (!m.valid()) continue;
-    st.where = top.diag().where(list[i], path);
-    st.name = "stage" + std::to_string(i + 1);
-    m.string("name", st.name);
-    if (m.integer("increments", st.increments) && st.increments < 1)
-      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, inf)");
-    if (m.real("duration", st.duration) && !(st.duration > 0))
-      m.error("duration", "value must be > 0 s");
-    m.boolean("reset_displacements", st.reset_displacements);
-    if (m.has("boundary_conditions")) {
-      const YAML::Node bcs = m.node("boundary_conditions");
-      if (!bcs.IsSequence()) m.error("boundary_conditions", "expected a list");
-      for (std::size_t j = 0; bcs.IsSequence() && j < bcs.size(); ++j) {
-        DirichletSpec bc;
-        YamlMap b(bcs[j], index_path(m.path("boundary_conditions"), j), top.diag(),
-                  {"set", "component", "value"});
-        if (!b.valid()) continue;
-        bc.where = b.where("set");
-        b.string("set", bc.set, true);
-        std::string comp;
-        if (b.string("component", comp, true) && b.has("component")) {
-          bc.component = component_index(comp, dim, dim == 2);
-          if (bc.component < 0)
-            b.error("component", "unknown component '" + comp +
-                                     "'; allowed: " + (dim == 2 ? "x, y (or r, z)" : "x, y, z"));
-        }
-        b.real("value", bc.value);
-        st.boundary_conditions.push_back(bc);
-      }
-    }
-    if (m.has("loads")) {
-      const YAML::Node loads = m.node("loads");
-      if (!loads.IsSequence()) m.error("loads", "expected a list");
-      for (std::size_t j = 0; loads.IsSequence() && j < loads.size(); ++j) {
-        LoadSpec ld;
-        YamlMap l(loads[j], index_path(m.path("loads"), j), top.diag(), {"type", "set", "value"});
-        if (!l.valid()) continue;
-        ld.where = l.where("set");
-        std::string type;
-        l.string("type", type, true);
-        if (type == "pressure") {
-          ld.type = LoadSpec::Type::Pressure;
-          l.string("set", ld.set, true);
-          l.real("value", ld.pressure, true);
-        } else if (type == "traction") {
-          ld.type = LoadSpec::Type::Traction;
-          l.string("set", ld.set, true);
-          if (l.reals("value", ld.traction, true) && l.has("value") &&
-              static_cast<int>(ld.traction.size()) != dim)
-            l.error("value", "expected " + std::to_string(dim) + " traction components (kPa)");
-        } else if (type == "gravity") {
-          ld.type = LoadSpec::Type::Gravity;
-          ld.where = l.where("type");
-          if (l.has("set") || l.has("value"))
-            l.error("type", "gravity takes no set or value: it uses each material's unit_weight");
-        } else if (!type.empty()) {
-          l.error("type", "unknown load type '" + type + "'; allowed: pressure, traction, gravity");
-        }
-        st.loads.push_back(ld);
-      }
-    }
-    if (m.has("interface_gaps")) {
-      const YAML::Node gaps = m.node("interface_gaps");
-      if (!gaps.IsSequence()) m.error("interface_gaps", "expected a list");
-      for (std::size_t j = 0; gaps.IsSequence() && j < gaps.size(); ++j) {
-        InterfaceGapSpec gap;
-        YamlMap g(gaps[j], index_path(m.path("interface_gaps"), j), top.diag(),
-                  {"interface", "value"});
-        if (!g.valid()) continue;
-        gap.where = g.where("interface");
-        g.string("interface", gap.interface, true);
-        g.real("value", gap.value, true);
-        st.interface_gaps.push_back(gap);
-      }
-    }
-    out.push_back(std::move(st));
-  }
-  return out;
-}
-
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
   std::vector<InterfaceSpec> out;
-  const YAML::Node list = top.node("interfaces");
-  if (!list.IsSequence()) {
-    top.error("interfaces", "expected a list of {name, between | facet_sets, law, parameters}");
-    return out;
-  }
   const auto& laws = contact::interface_laws();
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    InterfaceSpec spec;
-    const std::string path = index_path("interfaces", i);
-    YamlMap m(list[i], path, top.diag(),
-              {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"});
+  UniqueNames names("interface", "each interface needs its own, for its output files "
+                                 "interface_<name>.csv and interface_<name>.pvd");
+  const auto entries =
+      list_entries(top, "interfaces",
+                   {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"},
+                   "expected a list of {name, between | facet_sets, law, parameters}");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const YamlMap& m = entries[i];
     if (!m.valid()) continue;
-    spec.where = top.diag().where(list[i], path);
-    spec.name = "interface" + std::to_string(i + 1);
-    m.string("name", spec.name);
+    InterfaceSpec spec;
+    spec.where = m.where();
+    spec.name = names.read(m, i);
     m.strings("between", spec.between);
     m.strings("facet_sets", spec.facet_sets);
     if (m.has("between") == m.has("facet_sets"))

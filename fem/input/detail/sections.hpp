@@ -11,7 +11,10 @@ namespace bipot::input {
 MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir);
 std::vector<MaterialSpec> read_materials(const YamlMap& top);
 std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
-std::vector<StageSpec> read_stages(const YamlMap& top, int dim);
+/// The displacement components of a kinematics by index ("x", "y" / "r", "z" / "x", "y", "z").
+const std::vector<std::string>& component_names(const std::string& kinematics);
+
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics);
 OutputSpec read_output(const YamlMap& top);
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top);
 ContactSolverSpec read_contact_solver(const YamlMap& top);

@@ -1,9 +1,5 @@
 // Bad input is reported in one pass, each problem as file:line:col: key.path: message.
-#include "fem/analysis/model.hpp"
-#include "fem/core/error.hpp"
-#include "fem/input/problem_reader.hpp"
-
-#include <gtest/gtest.h>
+#include "tests/unit/input/input_test_utils.hpp"
 
 namespace bipot {
 namespace {
@@ -24,30 +20,6 @@ const std::string good =
     "      - {set: bottom, component: z, value: 0}\n"                               // 13
     "    loads:\n"                                                                  // 14
     "      - {type: pressure, set: top, value: 10}\n";                              // 15
-
-std::vector<std::string> problems_of(const std::string& text) {
-  try {
-    build_model(read_problem_text(text, "in.yaml"));
-  } catch (const InputError& e) {
-    return e.problems();
-  }
-  return {};
-}
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  return text.replace(pos, from.size(), to);
-}
-
-::testing::AssertionResult has(const std::vector<std::string>& problems, const std::string& s) {
-  for (const auto& p : problems)
-    if (p.find(s) != std::string::npos) return ::testing::AssertionSuccess();
-  std::string all;
-  for (const auto& p : problems)
-    all += "\n  " + p;
-  return ::testing::AssertionFailure() << "no problem contains \"" << s << "\" in:" << all;
-}
 
 TEST(ProblemReader, GoodInputParses) {
   const ProblemSpec spec = read_problem_text(good, "in.yaml");

@@ -1,0 +1,142 @@
+// The `stages` section: per stage, its boundary conditions, loads and interface gaps.
+#include "fem/input/detail/sections.hpp"
+
+#include "fem/core/nearest_name.hpp"
+#include "fem/input/problem_reader.hpp"
+
+#include <algorithm>
+
+namespace bipot::input {
+
+// In axisymmetry r and z name x and y (r is x, z is y); x and y are accepted too.
+const std::vector<std::string>& component_names(const std::string& kinematics) {
+  static const std::vector<std::string> plane = {"x", "y"}, axisymmetric = {"r", "z"},
+                                        three_d = {"x", "y", "z"};
+  return kinematics == "three_d" ? three_d : kinematics == "axisymmetric" ? axisymmetric : plane;
+}
+
+namespace {
+
+int component_index(const std::string& name, const std::string& kinematics) {
+  const auto& names = component_names(kinematics);
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  if (kinematics == "axisymmetric" && (name == "x" || name == "y")) return name == "x" ? 0 : 1;
+  return -1;
+}
+
+// A condition read completely, kept to find a later one of the stage that fixes the same set
+// and component to another value (which would silently win).
+struct FixedComponent {
+  std::string set;
+  int component = 0;
+  double value = 0;
+  std::string value_text, entry; ///< entry: "stages[0].boundary_conditions[1] (line 16)"
+};
+
+void read_boundary_conditions(const YamlMap& m, const std::string& kinematics, StageSpec& st) {
+  std::vector<FixedComponent> fixed;
+  for (const YamlMap& b :
+       list_entries(m, "boundary_conditions", {"set", "component", "value"}, "expected a list")) {
+    if (!b.valid()) continue;
+    DirichletSpec bc;
+    bc.where = b.where("set");
+    bool complete = b.string("set", bc.set, true) && b.has("set");
+    std::string comp;
+    if (b.string("component", comp, true) && b.has("component")) {
+      bc.component = component_index(comp, kinematics);
+      if (bc.component < 0)
+        b.error("component", "unknown component '" + comp + "' in " + kinematics +
+                                 "; allowed: " + join_names(component_names(kinematics)) +
+                                 (kinematics == "axisymmetric" ? " (or x, y)" : ""));
+    }
+    complete = complete && bc.component >= 0 && b.real("value", bc.value);
+    st.boundary_conditions.push_back(bc);
+    if (!complete) continue;
+    const FixedComponent f{bc.set, bc.component, bc.value,
+                           b.has("value") ? b.node("value").Scalar() : "0", b.path_and_line()};
+    for (const FixedComponent& other : fixed)
+      if (other.set == f.set && other.component == f.component && other.value != f.value)
+        b.error("value", "component " + comp + " of set '" + f.set + "' is fixed to " +
+                             f.value_text + " here and to " + other.value_text + " by " +
+                             other.entry + " in the same stage");
+    fixed.push_back(f);
+  }
+}
+
+void read_loads(const YamlMap& m, int dim, StageSpec& st) {
+  for (const YamlMap& l : list_entries(m, "loads", {"type", "set", "value"}, "expected a list")) {
+    if (!l.valid()) continue;
+    LoadSpec ld;
+    ld.where = l.where("set");
+    std::string type;
+    l.string("type", type, true);
+    if (type == "pressure") {
+      ld.type = LoadSpec::Type::Pressure;
+      l.string("set", ld.set, true);
+      l.real("value", ld.pressure, true);
+    } else if (type == "traction") {
+      ld.type = LoadSpec::Type::Traction;
+      l.string("set", ld.set, true);
+      if (l.reals("value", ld.traction, true) && l.has("value") &&
+          static_cast<int>(ld.traction.size()) != dim)
+        l.error("value", "expected " + std::to_string(dim) + " traction components (kPa)");
+    } else if (type == "gravity") {
+      ld.type = LoadSpec::Type::Gravity;
+      ld.where = l.where("type");
+      if (l.has("set") || l.has("value"))
+        l.error("type", "gravity takes no set or value: it uses each material's unit_weight");
+    } else if (!type.empty()) {
+      l.error("type", "unknown load type '" + type + "'; allowed: pressure, traction, gravity");
+    }
+    st.loads.push_back(ld);
+  }
+}
+
+void read_interface_gaps(const YamlMap& m, StageSpec& st) {
+  for (const YamlMap& g :
+       list_entries(m, "interface_gaps", {"interface", "value"}, "expected a list")) {
+    if (!g.valid()) continue;
+    InterfaceGapSpec gap;
+    gap.where = g.where("interface");
+    g.string("interface", gap.interface, true);
+    g.real("value", gap.value, true);
+    st.interface_gaps.push_back(gap);
+  }
+}
+
+} // namespace
+
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics) {
+  std::vector<StageSpec> out;
+  const std::string expected = "expected a non-empty list of stages";
+  if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
+    top.error("stages", expected);
+  UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
+                             "name stages");
+  const auto entries = list_entries(top, "stages",
+                                    {"name", "increments", "duration", "reset_displacements",
+                                     "boundary_conditions", "loads", "interface_gaps"},
+                                    expected);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const YamlMap& m = entries[i];
+    if (!m.valid()) continue;
+    StageSpec st;
+    st.where = m.where();
+    st.name = names.read(m, i);
+    if (m.integer("increments", st.increments) &&
+        (st.increments < 1 || st.increments > max_increments_per_stage))
+      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +
+                                std::to_string(max_increments_per_stage) + "]");
+    if (m.real("duration", st.duration) && !(st.duration > 0))
+      m.error("duration", "value must be > 0 s");
+    m.boolean("reset_displacements", st.reset_displacements);
+    if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
+    if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
+    if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    out.push_back(std::move(st));
+  }
+  return out;
+}
+
+} // namespace bipot::input
