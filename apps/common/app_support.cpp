@@ -1,4 +1,5 @@
 #include "apps/common/app_support.hpp"
+#include "apps/common/run_folder.hpp"
 
 #include "fem/linalg/communicator.hpp"
 
@@ -59,14 +60,18 @@ void prepare_error_handling() {
 
 int report_error(const std::exception& e, int code, const std::string& program) {
   if (!every_rank_failed(kErrorAgreementSeconds)) {
+    const std::string where = fail_open_run_folder(e.what());
     std::cerr << error_text(e, program + ": rank " + std::to_string(mpi_rank()) + " of " +
                                    std::to_string(mpi_size()) + ": ");
+    if (!where.empty()) std::cerr << program << ": " << where << "\n";
     std::cerr.flush();
     std::fflush(stdout);
     MPI_Abort(MPI_COMM_WORLD, code);
   }
   if (mpi_rank() != 0) return code;
+  const std::string where = fail_open_run_folder(e.what());
   std::cerr << error_text(e, program + ": ");
+  if (!where.empty()) std::cerr << program << ": " << where << "\n";
   return code;
 }
 

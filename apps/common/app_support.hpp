@@ -21,7 +21,8 @@ constexpr double kErrorAgreementSeconds = 5.0;
 /// global norms), rank 0 prints it as "<program>: invalid input (n problems):" and one
 /// problem a line, or "<program>: <message>", and every rank returns `code`. When this rank
 /// failed alone (the others wait in a collective call that will never complete), it prints
-/// "<program>: rank r of n: <message>" and ends every rank with MPI_Abort(`code`).
+/// "<program>: rank r of n: <message>" and ends every rank with MPI_Abort(`code`). Either
+/// way an open RunFolder is moved to `<dir>.failed` with the message in its status first.
 int report_error(const std::exception& e, int code, const std::string& program);
 
 /// Collective, before a guarded body runs: the communicator the error handling agrees on.
