@@ -86,13 +86,15 @@ int check_command(const std::vector<std::string>& args) {
 int run_command(const std::vector<std::string>& args) {
   if (wants_help(args)) {
     if (root())
-      std::cout << "bipot run FILE.yaml [--output DIR] [--quiet]\n  Solves the problem stage by "
-                   "stage and writes DIR (default: output.directory) with solution.pvd (open it "
-                   "in ParaView),\n  reactions.csv and status.txt. The results are written "
-                   "into DIR.running-<pid> and replace DIR\n  only when the run finishes; a "
-                   "failed run leaves DIR as it was and its converged increments in\n  "
-                   "DIR.failed. Prints one progress line per converged increment unless "
-                   "--quiet.\n";
+      std::cout << "bipot run FILE.yaml [--output DIR] [--quiet]\n"
+                   "  Solves the problem stage by stage and writes DIR (default: "
+                   "output.directory):\n"
+                   "  solution.pvd (open it in ParaView), reactions.csv and status.txt. The "
+                   "results are\n"
+                   "  written into DIR.running-<pid> and replace DIR only when the run "
+                   "finishes; a failed\n"
+                   "  run leaves DIR as it was and its converged increments in DIR.failed.\n"
+                   "  Prints one progress line per converged increment unless --quiet.\n";
     return 0;
   }
   bool quiet = false;
