@@ -1,5 +1,6 @@
 #include "apps/bipot/commands.hpp"
 #include "apps/common/app_support.hpp"
+#include "apps/common/run_folder.hpp"
 
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
@@ -62,6 +63,7 @@ void print_usage() {
   std::cout << "bipot - finite elements with adhesive, frictional and unilateral interfaces\n\n"
                "usage:\n"
                "  bipot run FILE.yaml        solve the problem, results in output.directory\n"
+               "                             (status.txt says finished or failed)\n"
                "  bipot check FILE.yaml      validate the input and the mesh, solve nothing\n"
                "  bipot describe [NAME]      parameters of a material, an interface law, a\n"
                "                             contact solver or linear_solver; 'input' for the\n"
@@ -94,39 +96,57 @@ int check_command(const std::vector<std::string>& args) {
 int run_command(const std::vector<std::string>& args) {
   if (wants_help(args)) {
     if (root())
-      std::cout << "bipot run FILE.yaml [--quiet]\n  Solves the problem stage by stage and "
-                   "writes output.directory/solution.pvd (open it in ParaView) and "
-                   "reactions.csv.\n  Prints one progress line per converged increment unless "
-                   "--quiet.\n";
+      std::cout << "bipot run FILE.yaml [--output DIR] [--quiet]\n"
+                   "  Solves the problem stage by stage and writes DIR (default: "
+                   "output.directory):\n"
+                   "  solution.pvd (open it in ParaView), reactions.csv and status.txt. The "
+                   "results are\n"
+                   "  written into DIR.running-<pid> and replace DIR only when the run "
+                   "finishes; a failed\n"
+                   "  run leaves DIR as it was and its converged increments in DIR.failed.\n"
+                   "  Prints one progress line per converged increment unless --quiet.\n";
     return 0;
   }
   bool quiet = false;
-  for (const auto& a : args)
+  std::string output;
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
     if (a == "--quiet" || a == "-q")
       quiet = true;
+    else if (a == "--output" && i + 1 < args.size())
+      output = args[++i];
     else if (!a.empty() && a[0] == '-') {
       if (root()) std::cerr << "bipot run: unknown option '" << a << "'\n";
       return 1;
-    }
-  const std::string file = one_file(args, "bipot run FILE.yaml [--quiet]");
+    } else
+      files.push_back(a);
+  }
+  const std::string file = one_file(files, "bipot run FILE.yaml [--output DIR] [--quiet]");
   if (file.empty()) return 1;
   return guarded([&] {
     const Model model = checked_model(file);
-    ResultWriter writer(model, mpi_rank(), mpi_size());
-    StaticAnalysis analysis(model, {}, &writer);
-    if (root() && !quiet)
-      std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "
-                << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs() << " DOFs on "
-                << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
-    const RunSummary summary = analysis.run([&](const StepReport& r) {
-      if (!root() || quiet) return;
-      // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
-      std::printf("  stage %-12s step %3d %4.0f%%  t = %-9.4g  newton %2d  linear %4d  "
-                  "residual %.2e  %.2f s\n",
-                  r.stage.c_str(), r.step, 100.0 * r.load_factor, r.time, r.iterations,
-                  r.linear_iterations, r.residual, r.seconds);
-      std::fflush(stdout);
-    });
+    RunFolder folder(output.empty() ? model.spec.output.directory : output, model.spec, "bipot");
+    RunSummary summary;
+    {
+      ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
+      StaticAnalysis analysis(model, {}, &writer);
+      if (root() && !quiet)
+        std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "
+                  << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs()
+                  << " DOFs on " << mpi_size() << " rank" << (mpi_size() == 1 ? "" : "s") << "\n";
+      summary = analysis.run([&](const StepReport& r) {
+        folder.converged(r);
+        if (!root() || quiet) return;
+        // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+        std::printf("  stage %-12s step %3d %4.0f%%  t = %-9.4g  newton %2d  linear %4d  "
+                    "residual %.2e  %.2f s\n",
+                    r.stage.c_str(), r.step, 100.0 * r.load_factor, r.time, r.iterations,
+                    r.linear_iterations, r.residual, r.seconds);
+        std::fflush(stdout);
+      });
+    }
+    folder.finish();
     const double peak_mb = max_all(peak_memory_mb());
     if (root()) {
       std::printf("bipot: done: %d increments, %d linear solves (%d iterations), %d matrix "
@@ -136,8 +156,8 @@ int run_command(const std::vector<std::string>& args) {
                   summary.steps, summary.linear_solves, summary.linear_iterations,
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
                   summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
-      std::cout << "bipot: results in " << writer.directory() << " (ParaView: " << writer.pvd_path()
-                << ")\n";
+      std::cout << "bipot: results in " << folder.directory()
+                << " (ParaView: " << folder.directory() << "/solution.pvd)\n";
     }
     return 0;
   });

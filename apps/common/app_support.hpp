@@ -1,6 +1,7 @@
 #pragma once
 /// What the command-line apps share: how they start MPI and Kokkos from the command line,
-/// the exit-code convention and how errors are printed, and the peak memory they report.
+/// the exit-code convention, how errors are printed and end every MPI rank, and the peak
+/// memory they report.
 
 #include "fem/core/error.hpp"
 
@@ -18,13 +19,26 @@ namespace bipot::app {
 /// Exit codes of every bipot app.
 enum ExitCode { kOk = 0, kUsage = 1, kInvalidInput = 2, kSolverFailure = 3, kOtherError = 4 };
 
-/// Prints `e` on rank 0 as "<program>: invalid input (n problems):" and one problem a line,
-/// or "<program>: <message>"; returns `code`. Every rank calls it (each validated the input
-/// the same way, so all fail before any collective call).
+/// Seconds a rank that caught an exception waits for the others to report theirs before it
+/// concludes that it failed alone and aborts the job.
+constexpr double kErrorAgreementSeconds = 5.0;
+
+/// Called by every rank that caught `e`; returns `code` or does not return. When every rank
+/// caught an error (input validated the same way everywhere, a solver failure decided on
+/// global norms), rank 0 prints it as "<program>: invalid input (n problems):" and one
+/// problem a line, or "<program>: <message>", and every rank returns `code`. When this rank
+/// failed alone (the others wait in a collective call that will never complete), it prints
+/// "<program>: rank r of n: <message>" and ends every rank with MPI_Abort(`code`). Either
+/// way an open RunFolder is moved to `<dir>.failed` with the message in its status first.
 int report_error(const std::exception& e, int code, const std::string& program);
 
+/// Collective, before a guarded body runs: the communicator the error handling agrees on.
+void prepare_error_handling();
+
 /// Runs `body` (returning an exit code) and maps the toolkit's exceptions to exit codes.
+/// Every rank calls it at the same point.
 template <class F> int run_guarded(const std::string& program, F&& body) {
+  prepare_error_handling();
   try {
     return body();
   } catch (const InputError& e) {

@@ -2,6 +2,7 @@
 // with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
 // problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
 #include "apps/common/app_support.hpp"
+#include "apps/common/run_folder.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -30,13 +31,15 @@ void usage() {
          "  pile_pullout run FILE.yaml [--output DIR] [--quiet] [--no-plot]\n"
          "        geostatic, installation and pull-out stages; writes DIR (default: the file's\n"
          "        output.directory) with head_force.csv, profiles.csv, solution.pvd,\n"
-         "        interface_shaft.pvd, interface_toe.pvd and, with python3-matplotlib,\n"
-         "        pullout_curve.png and profiles.png\n"
+         "        interface_shaft.pvd, interface_toe.pvd, status.txt and, with\n"
+         "        python3-matplotlib, pullout_curve.png and profiles.png. DIR is replaced\n"
+         "        only when the run finishes: a failed run leaves it as it was and its\n"
+         "        converged steps in DIR.failed\n"
          "  pile_pullout check FILE.yaml     validate the file and build the model\n"
          "  pile_pullout describe [--markdown]   the input file's keys\n\n"
          "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
          "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure (converged steps are\n"
-         "kept on disk), 4 other error.\n";
+         "kept in DIR.failed), 4 other error.\n";
 }
 
 // Plots by the bundled matplotlib script; a missing Python or matplotlib costs the images,
@@ -65,8 +68,9 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
   if (!output.empty()) spec.output.directory = output;
   const Model model = build_model(pile::make_problem(spec));
   const bool root = mpi_rank() == 0;
-  ResultWriter writer(model, mpi_rank(), mpi_size());
-  pile::PileResults results(model, writer.directory(), spec.profiles_at_mm, root);
+  app::RunFolder folder(spec.output.directory, model.spec, "pile_pullout");
+  ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
+  pile::PileResults results(model, folder.working(), spec.profiles_at_mm, root);
   StaticAnalysis analysis(model, {}, &writer);
   if (root && !quiet)
     std::printf("pile_pullout: %s: %s interface, %lld nodes, %lld cells, %lld DOFs, %d rank%s\n",
@@ -74,27 +78,23 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
                 static_cast<long long>(model.mesh.num_cells()),
                 static_cast<long long>(analysis.dofs().num_dofs()), mpi_size(),
                 mpi_size() == 1 ? "" : "s");
-  RunSummary summary;
-  try {
-    summary = analysis.run([&](const StepReport& r) {
-      results.record(r, analysis);
-      if (!root || quiet) return;
-      const auto h = results.last();
-      // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
-      std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d%s  "
-                  "%.2f s%s\n",
-                  r.stage.c_str(), r.step, 100.0 * r.load_factor, 1e3 * h.displacement, h.force,
-                  r.iterations, r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "",
-                  r.seconds,
-                  r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
-      std::fflush(stdout);
-    });
-  } catch (const SolverError&) {
-    if (root)
-      std::cerr << "pile_pullout: converged steps are in " << results.head_force_path() << "\n";
-    throw;
-  }
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    folder.converged(r);
+    results.record(r, analysis);
+    if (!root || quiet) return;
+    const auto h = results.last();
+    // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+    std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d%s  "
+                "%.2f s%s\n",
+                r.stage.c_str(), r.step, 100.0 * r.load_factor, 1e3 * h.displacement, h.force,
+                r.iterations, r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "",
+                r.seconds,
+                r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
+    std::fflush(stdout);
+  });
   const double peak_mb = max_all(app::peak_memory_mb());
+  if (root && plots) plot(folder.working(), spec.name);
+  folder.finish();
   if (!root) return 0;
   std::printf("pile_pullout: peak pull-out force %.2f kN at %.3f mm; final %.2f kN at %.3f mm\n",
               results.peak_force(), 1e3 * results.peak_displacement(), results.last().force,
@@ -105,17 +105,15 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
               summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
               summary.matrix_setups, summary.seconds, summary.assembly_seconds,
               summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
-  if (plots) plot(writer.directory(), spec.name);
   // List what is there: a bonded shaft has no profiles to plot.
+  const std::string& dir = folder.directory();
   std::string files = "head_force.csv, profiles.csv";
   for (const char* png : {"pullout_curve.png", "profiles.png"})
-    if (plots && std::filesystem::exists(writer.directory() + "/" + png))
-      files += std::string(", ") + png;
-  std::cout << "pile_pullout: results in " << writer.directory() << " (" << files
-            << "; ParaView: " << writer.pvd_path() << ")\n";
-  if (plots && std::filesystem::exists(writer.directory() + "/pullout_curve.png"))
-    std::cout << "pile_pullout: plot of the pull-out curve: " << writer.directory()
-              << "/pullout_curve.png\n";
+    if (plots && std::filesystem::exists(dir + "/" + png)) files += std::string(", ") + png;
+  std::cout << "pile_pullout: results in " << dir << " (" << files << "; ParaView: " << dir
+            << "/solution.pvd)\n";
+  if (plots && std::filesystem::exists(dir + "/pullout_curve.png"))
+    std::cout << "pile_pullout: plot of the pull-out curve: " << dir << "/pullout_curve.png\n";
   return 0;
 }
 

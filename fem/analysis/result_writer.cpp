@@ -18,8 +18,10 @@ std::vector<std::string> component_names(const Model& model) {
 }
 } // namespace
 
-ResultWriter::ResultWriter(const Model& model, int rank, int size)
-    : model_(model), directory_(model.spec.output.directory), rank_(rank) {
+ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string directory)
+    : model_(model),
+      directory_(directory.empty() ? model.spec.output.directory : std::move(directory)),
+      rank_(rank) {
   std::filesystem::create_directories(directory_);
   std::set<std::string> sets;
   for (const auto& stage : model.spec.stages)

@@ -20,7 +20,8 @@ class CsvWriter;
 
 class ResultWriter {
 public:
-  ResultWriter(const Model& model, int rank, int size);
+  /// Writes into `directory` (created if missing); empty: the model's output.directory.
+  ResultWriter(const Model& model, int rank, int size, std::string directory = "");
   ~ResultWriter();
 
   /// Called by StaticAnalysis on every rank after each converged increment (collective).

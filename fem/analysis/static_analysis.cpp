@@ -26,11 +26,12 @@ void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
     g.finish_assembly();
     f.axpy(-gravity_factor, g);
     f.scale(-1.0);
-    // At a supported node body 1's force also carries the support's reaction: the interface's
-    // share is unknown there, so it is reported as NaN (a gap in plots).
+    // At a supported node body 1's force also carries the support's reaction (how it splits
+    // between the bodies is not determined): the support is taken to act on body 1, the
+    // first of `between` (a pile head pulled by its jack), so body 1 passes on the rest.
     std::vector<double> force = f.gather_all();
     for (const auto& kv : target)
-      force[kv.first] = std::numeric_limits<double>::quiet_NaN();
+      force[kv.first] += reaction_all[kv.first];
     interfaces[k]->set_tied_forces(force);
   }
 }

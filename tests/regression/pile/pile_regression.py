@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Runs the pile_pullout app on a shrunk input and compares its head force curve with a gold
-file, or (--update) writes the gold file. Used by CTest (tests/regression/pile/CMakeLists.txt).
+"""Runs the pile_pullout app on a shrunk input, checks that no CSV of the results holds NaN or
+inf, and compares its head force curve with a gold file, or (--update) writes the gold file.
+Used by CTest (tests/regression/pile/CMakeLists.txt).
 
 The gold curves were produced by this code on one rank. A difference beyond the tolerance
 means the physics, the model set-up or the solver's converged answer changed: find out which
@@ -12,6 +13,9 @@ import os
 import shutil
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from run_safety import bad_values  # noqa: E402
 
 
 def read_curve(path):
@@ -40,7 +44,12 @@ def main():
     run = subprocess.run(cmd, cwd=a.workdir)
     if run.returncode != 0:
         sys.exit(f"pile_regression: {' '.join(cmd)} exited with {run.returncode}")
-    result = os.path.join(a.workdir, "results", "head_force.csv")
+    results = os.path.join(a.workdir, "results")
+    bad = [b for f in sorted(os.listdir(results)) if f.endswith(".csv")
+           for b in bad_values(os.path.join(results, f))]
+    if bad:
+        sys.exit("pile_regression: NaN or inf in the results:\n" + "\n".join(bad[:20]))
+    result = os.path.join(results, "head_force.csv")
     if a.update:
         shutil.copyfile(result, a.gold)
         print(f"wrote {a.gold}")
