@@ -11,7 +11,8 @@ namespace {
 /// Builds a mesh on the heap and forgets it. Not inlined, so that no live frame of main
 /// still holds the pointer when LeakSanitizer scans the stack at exit.
 [[gnu::noinline]] void leak_a_mesh() {
-  auto* mesh = new bipot::Mesh(bipot::make_rectangle(0.0, 1.0, 2, 0.0, 1.0, 2, bipot::CellType::Quad4));
+  auto* mesh =
+      new bipot::Mesh(bipot::make_rectangle(0.0, 1.0, 2, 0.0, 1.0, 2, bipot::CellType::Quad4));
   std::cout << "leaked a mesh of " << mesh->num_cells() << " cells" << std::endl;
 }
 
