@@ -15,7 +15,9 @@
 /// bipotential fixed point of formulation.md §4, hence the interface law itself. Its exact
 /// generalized Jacobian, from the projection's and the β update's derivatives
 /// (InterfaceResponseDerivatives), makes the iteration locally quadratic; in stick
-/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0.
+/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0. A
+/// stuck component acting only on prescribed DOFs is undetermined; its row also fixes its own
+/// step (see add()).
 
 #include "contact/solver/interface_assembler.hpp"
 

@@ -7,11 +7,10 @@
 // condensed bulk residual with the prescribed increments, f_c acting on I only), reduces
 // exactly to S x = c + f_c(x) on I: the interior equations hold by construction. K is
 // factorised once per constrained set, R0 assembled once per increment, and a Newton
-// iteration costs O(|I|³), independent of the mesh interior. A nonlinear bulk repeats the
+// iteration costs O(|I|²) (GMRES on the factors of an earlier Newton matrix, ReusedLuSolver)
+// or O(|I|³) when it refactorises, independent of the mesh interior. A nonlinear bulk repeats the
 // condensation around each new bulk state (outer loop) until the assembled residual is met.
 #include "fem/analysis/detail/static_analysis_impl.hpp"
-
-#include <Eigen/LU>
 
 namespace bipot {
 
@@ -95,6 +94,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       summary.setup_seconds += seconds_since(t0);
       ++summary.matrix_setups;
       schur_ready = true;
+      newton_matrix.reset(); // S changed: the old Newton matrix is no preconditioner
       schur_constrained = constrained_dofs;
     }
     t0 = std::chrono::steady_clock::now();
@@ -139,9 +139,13 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
         return false;
       }
       t0 = std::chrono::steady_clock::now();
-      dz = J.partialPivLu().solve(-F);
+      const int factorizations = newton_matrix.factorizations();
+      dz = newton_matrix.solve(J, -F);
       summary.solve_seconds += seconds_since(t0);
       ++summary.linear_solves;
+      summary.matrix_setups += newton_matrix.factorizations() - factorizations;
+      summary.linear_iterations += newton_matrix.last_iterations();
+      log.linear_iterations += newton_matrix.last_iterations();
       if (!dz.allFinite()) {
         log.failure = "the generalized Jacobian is singular";
         return false;

@@ -15,6 +15,7 @@
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 #include "fem/linalg/linear_solver.hpp"
+#include "fem/linalg/reused_lu_solver.hpp"
 #include "fem/linalg/schur_complement_solver.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
@@ -101,6 +102,7 @@ struct StaticAnalysis::Impl {
   // the bulk tangent or the constrained DOFs change.
   std::unique_ptr<contact::InterfaceNewtonSystem> newton_system;
   SchurComplementSolver schur;
+  ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
   bool schur_ready = false;
   std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
 
