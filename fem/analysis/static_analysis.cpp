@@ -90,6 +90,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         for (std::size_t i = 0; i < u.size(); ++i)
           u[i] += extrapolation * (u[i] - u_before_last[i]);
       bool converged = solve_increment(lambda, dtau, log);
+      bool beta_can_change = false;
       if (!converged) {
         u = u_begin;
         matrix_ready = false;
@@ -97,7 +98,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           ++level;
           continue;
         }
-        if (has_contact) {
+        // The fallback holds β and updates it: without adhesion left anywhere it would only
+        // repeat the failed solve.
+        beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
+          const std::vector<double> beta = ia->committed_adhesion();
+          return !ia->tied() &&
+                 std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
+        });
+        if (has_contact && beta_can_change) {
           IncrementLog staggered;
           converged = solve_increment_staggered(lambda, dtau, staggered);
           if (converged) {
@@ -119,7 +127,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         for (double h : log.history)
           msg << " " << h;
         msg << "; multiplier change " << log.contact
-            << ". Converged increments are in the output directory.";
+            << ". To get through: more increments in this stage (smaller steps), "
+            << (beta_can_change ? "a larger adhesion_viscosity (debonding snap-backs), " : "")
+            << "or a looser contact_solver.tolerance if the residual history stalls just above "
+               "it.";
         throw SolverError(msg.str());
       }
       for (const auto& ia : interfaces)
