@@ -162,6 +162,15 @@ TEST(InterfaceInput, UnknownLawAndSolverListRegisteredNames) {
                      "bipotential_uzawa, generalized_newton, semismooth_newton"));
 }
 
+// A tolerance below what double precision can verify is refused with the reason, at check.
+TEST(InterfaceInput, ToleranceBelowRoundOffIsRefused) {
+  const auto p = problems_of(with_interface(
+      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: coulomb_signorini\n",
+      "contact_solver: {type: generalized_newton, tolerance: 1.0e-16}\n"));
+  EXPECT_TRUE(has(p, "contact_solver.tolerance: value 1e-16 is out of range [1e-14, 1): below "
+                     "1e-14 (about 50 machine epsilons) a relative residual is the round-off"));
+}
+
 TEST(InterfaceInput, RegionsThatDoNotTouch) {
   const auto p = problems_of(with_interface(
       "interfaces:\n  - name: joint\n    between: [left, right]\n    law: coulomb_signorini\n"));
