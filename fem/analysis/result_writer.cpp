@@ -54,8 +54,12 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
         m.add_cell(f.type, ids, region);
       }
       interface_meshes_.push_back(std::move(m));
+      // Like the solution series, only with `output.vtk` and at the `every` steps; the CSV
+      // below takes every step.
       interface_vtk_.push_back(
-          std::make_unique<VtkSeriesWriter>(directory_, "interface_" + iface.name, 0, 1));
+          model.spec.output.vtk
+              ? std::make_unique<VtkSeriesWriter>(directory_, "interface_" + iface.name, 0, 1)
+              : nullptr);
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
       for (const auto& c : component_names(model))
         cols.push_back("force_" + c);
@@ -86,10 +90,9 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     for (double f : analysis.reaction(s))
       row.push_back(f);
   if (reactions_) reactions_->write_row(row);
-  if (rank_ == 0) write_interfaces(report, analysis);
-
   const bool due =
       report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
+  if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
   std::vector<double> strain, stress;
@@ -103,7 +106,8 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   barrier();
 }
 
-void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis) {
+void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis,
+                                    bool vtk_due) {
   const int dim = spatial_dim(model_.kinematics);
   for (std::size_t k = 0; k < interface_csv_.size(); ++k) {
     const auto& ia = *analysis.interfaces()[written_[k]];
@@ -113,6 +117,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
     for (int c = 0; c < dim; ++c)
       row.push_back(f[c]);
     interface_csv_[k]->write_row(row);
+    if (!interface_vtk_[k] || !vtk_due) continue;
 
     const auto& results = ia.results();
     const std::size_t n = results.size();

@@ -34,7 +34,8 @@ public:
   std::string pvd_path() const;
 
 private:
-  void write_interfaces(const StepReport& report, const StaticAnalysis& analysis);
+  /// The interface CSV rows, and with `vtk_due` their VTK series step.
+  void write_interfaces(const StepReport& report, const StaticAnalysis& analysis, bool vtk_due);
 
   const Model& model_;
   std::string directory_;

@@ -359,5 +359,46 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   barrier(); // every rank has read before the next test may clean up
 }
 
+// The interface VTK series follows `output.vtk` and `output.every` like the solution series
+// (it used to write every step whatever they said); its CSV keeps every step.
+TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
+  namespace fs = std::filesystem;
+  for (const std::string output : {"{vtk: false}", "{every: 3}"}) {
+    const std::string dir = "contact_block_output_every";
+    if (mpi_rank() == 0) fs::remove_all(dir);
+    barrier();
+    const std::string text =
+        block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift) +
+        "output: {directory: " + dir + ", " + output.substr(1);
+    const Model model = build_model(read_problem_text(text, "block.yaml"));
+    {
+      ResultWriter writer(model, mpi_rank(), mpi_size());
+      StaticAnalysis analysis(model, {}, &writer);
+      analysis.run();
+    }
+    barrier();
+    int interface_steps = 0, solution_steps = 0, csv_rows = -1;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("interface_joint_", 0) == 0) ++interface_steps;
+      if (name.rfind("solution_", 0) == 0 && name.find("_0.vtu") != std::string::npos)
+        ++solution_steps;
+    }
+    std::ifstream csv(dir + "/interface_joint.csv");
+    for (std::string line; std::getline(csv, line);)
+      ++csv_rows;
+    EXPECT_EQ(csv_rows, 8) << output;
+    if (output == "{vtk: false}") {
+      EXPECT_EQ(interface_steps, 0);
+      EXPECT_FALSE(fs::exists(dir + "/interface_joint.pvd"));
+    } else {
+      // Steps 3 and 6 of the run, and the last of each of the three stages: 2, 6, 8.
+      EXPECT_EQ(solution_steps, 4);
+      EXPECT_EQ(interface_steps, solution_steps);
+    }
+    barrier();
+  }
+}
+
 } // namespace
 } // namespace bipot
