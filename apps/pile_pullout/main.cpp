@@ -2,6 +2,7 @@
 // with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
 // problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
 #include "apps/common/app_support.hpp"
+#include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
@@ -35,7 +36,7 @@ void usage() {
          "        python3-matplotlib, pullout_curve.png and profiles.png. DIR is replaced\n"
          "        only when the run finishes: a failed run leaves it as it was and its\n"
          "        converged steps in DIR.failed\n"
-         "  pile_pullout check FILE.yaml     validate the file and build the model\n"
+         "  pile_pullout check FILE.yaml     validate the file, build and check the model\n"
          "  pile_pullout describe [--markdown]   the input file's keys\n\n"
          "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
          "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure (converged steps are\n"
@@ -66,7 +67,7 @@ void plot(const std::string& dir, const std::string& label) {
 int run(const std::string& file, const std::string& output, bool quiet, bool plots) {
   pile::PileSpec spec = pile::read_pile_file(file);
   if (!output.empty()) spec.output.directory = output;
-  const Model model = build_model(pile::make_problem(spec));
+  const Model model = app::checked_model(pile::make_problem(spec));
   const bool root = mpi_rank() == 0;
   app::RunFolder folder(spec.output.directory, model.spec, "pile_pullout");
   ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
@@ -174,7 +175,7 @@ int main(int argc, char** argv) {
   if (command == "check")
     return guarded([&] {
       const bipot::Model model =
-          bipot::build_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
+          app::checked_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
       if (root)
         std::cout << files[0] << ": ok (" << model.mesh.num_nodes() << " nodes, "
                   << model.mesh.num_cells() << " cells)\n";
