@@ -397,6 +397,7 @@ TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
       EXPECT_EQ(interface_steps, solution_steps);
     }
     barrier();
+    if (mpi_rank() == 0) fs::remove_all(dir);
   }
 }
 
