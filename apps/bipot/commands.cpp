@@ -2,6 +2,7 @@
 #include "apps/common/app_support.hpp"
 #include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
+#include "apps/common/step_text.hpp"
 
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
@@ -132,11 +133,11 @@ int run_command(const std::vector<std::string>& args) {
       summary = analysis.run([&](const StepReport& r) {
         folder.converged(r);
         if (!root() || quiet) return;
-        // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+        // Stage progress rather than "step k of n": sub-increments add steps to the plan.
         std::printf("  stage %-12s step %3d %4.0f%%  t = %-9.4g  newton %2d  linear %4d  "
-                    "residual %.2e  %.2f s\n",
+                    "residual %.2e  %.2f s%s\n",
                     r.stage.c_str(), r.step, 100.0 * r.load_factor, r.time, r.iterations,
-                    r.linear_iterations, r.residual, r.seconds);
+                    r.linear_iterations, r.residual, r.seconds, app::step_flags(r).c_str());
         std::fflush(stdout);
       });
     }
@@ -150,6 +151,7 @@ int run_command(const std::vector<std::string>& args) {
                   summary.steps, summary.linear_solves, summary.linear_iterations,
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
                   summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+      std::cout << app::stepping_summary(summary, "bipot") << "\n";
       std::cout << "bipot: results in " << folder.directory()
                 << " (ParaView: " << folder.directory() << "/solution.pvd)\n";
     }

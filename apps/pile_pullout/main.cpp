@@ -4,6 +4,7 @@
 #include "apps/common/app_support.hpp"
 #include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
+#include "apps/common/step_text.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -84,13 +85,10 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
     results.record(r, analysis);
     if (!root || quiet) return;
     const auto h = results.last();
-    // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
-    std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d%s  "
-                "%.2f s%s\n",
+    // Stage progress rather than "step k of n": sub-increments add steps to the plan.
+    std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d  %.2f s%s\n",
                 r.stage.c_str(), r.step, 100.0 * r.load_factor, 1e3 * h.displacement, h.force,
-                r.iterations, r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "",
-                r.seconds,
-                r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
+                r.iterations, r.seconds, app::step_flags(r).c_str());
     std::fflush(stdout);
   });
   const double peak_mb = max_all(app::peak_memory_mb());
@@ -106,6 +104,7 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
               summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
               summary.matrix_setups, summary.seconds, summary.assembly_seconds,
               summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+  std::cout << app::stepping_summary(summary, "pile_pullout") << "\n";
   // List what is there: a bonded shaft has no profiles to plot.
   const std::string& dir = folder.directory();
   std::string files = "head_force.csv, profiles.csv";

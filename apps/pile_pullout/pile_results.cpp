@@ -75,14 +75,14 @@ void PileResults::record(const StepReport& report, const StaticAnalysis& analysi
 
   // Profiles: the end of the geostatic and installation stages, the pull-out steps that first
   // reach each requested head displacement, and the last step.
-  bool due = !pullout && report.step == report.steps;
+  bool due = !pullout && report.stage_end;
   if (pullout) {
     while (next_profile_ < profiles_at_mm_.size() &&
            head_mm >= profiles_at_mm_[next_profile_] * (1 - 1e-9)) {
       due = true;
       ++next_profile_;
     }
-    due = due || report.step == report.steps;
+    due = due || report.stage_end;
   }
   if (due) write_profile(report, analysis, head_mm);
 }

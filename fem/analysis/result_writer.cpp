@@ -91,7 +91,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
       row.push_back(f);
   if (reactions_) reactions_->write_row(row);
   const bool due =
-      report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
+      report.global_step % model_.spec.output.every == 0 || report.stage_end;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;

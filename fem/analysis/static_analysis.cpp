@@ -74,10 +74,21 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     double done = 0.0, last_size = 0.0; // last_size: of the last converged increment
     std::vector<double> u_before_last;  // u at the start of the last converged increment
     int level = 0, step = 0;
+    // An increment's time includes its failed attempts: the clock restarts only when one
+    // converges.
+    auto step_start = std::chrono::steady_clock::now();
+    double failed_seconds = 0;
     while (done < 1.0 - 1e-12) {
-      const auto step_start = std::chrono::steady_clock::now();
+      const auto attempt_start = std::chrono::steady_clock::now();
       const double size = planned / std::pow(2.0, level);
-      const double lambda = std::min(1.0, done + size);
+      // Keep the plan: an increment never steps over the next planned load level k/n, so
+      // that after a cut-back the sub-increments end exactly on it and every planned level
+      // has its result (a sliver below 1e-9 of a planned increment is merged into it).
+      const int next_k = std::min(stage.increments,
+                                  static_cast<int>(std::floor(done * stage.increments + 1e-9)) + 1);
+      const double next_level =
+          next_k == stage.increments ? 1.0 : static_cast<double>(next_k) / stage.increments;
+      const double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
       const double dtau = (lambda - done) * stage.duration;
@@ -96,6 +107,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         matrix_ready = false;
         if (level < max_cutbacks) {
           ++level;
+          ++summary.cutbacks;
+          failed_seconds += seconds_since(attempt_start);
           continue;
         }
         // The fallback holds β and updates it: without adhesion left anywhere it would only
@@ -161,7 +174,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.stage_index = static_cast<int>(s);
       rep.step = ++step;
       rep.steps = stage.increments;
+      rep.planned_step = lambda == next_level ? next_k : 0;
+      rep.stage_end = lambda == 1.0;
       rep.global_step = ++summary.steps;
+      if (rep.planned_step == 0) ++summary.sub_increments;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
       rep.iterations = log.iterations;
@@ -187,6 +203,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         last_resultant[k] = f;
       }
       rep.seconds = seconds_since(step_start);
+      rep.failed_seconds = failed_seconds;
+      summary.failed_seconds += failed_seconds;
       t0 = std::chrono::steady_clock::now();
       if (writer) writer->write_step(rep, *this_analysis);
       summary.output_seconds += seconds_since(t0);
@@ -195,6 +213,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       u_before_last = u_begin;
       done = lambda;
       if (level > 0) --level; // grow back towards the planned increment
+      step_start = std::chrono::steady_clock::now();
+      failed_seconds = 0;
     }
     F_prev.copy(F_cur);
     gravity_before = gravity_now;

@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace bipot {
@@ -357,6 +358,46 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint.pvd"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint_0007_0.vtu"));
   barrier(); // every rank has read before the next test may clean up
+}
+
+// Cut-backs keep the plan: with at most 2 Newton iterations per attempt the shear stage
+// (press and shear only: opening takes 3) needs cut-backs, and the sub-increments that follow end
+// exactly on the next planned load level, so every planned level k/n of every stage has its result,
+// flagged as such.
+TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
+  const std::string press_shear =
+      press_shear_lift.substr(0, press_shear_lift.find("  - name: lift"));
+  const Model model = build_model(
+      read_problem_text(block_input(coulomb(0.3),
+                                    "contact_solver: {type: generalized_newton, max_iterations: 2, "
+                                    "tolerance: 1.0e-10}\n",
+                                    press_shear),
+                        "b.yaml"));
+  StaticAnalysis analysis(model);
+  std::map<int, std::vector<StepReport>> by_stage;
+  const RunSummary summary =
+      analysis.run([&](const StepReport& r) { by_stage[r.stage_index].push_back(r); });
+  EXPECT_GT(summary.cutbacks, 0); // the test must exercise a cut-back
+  EXPECT_GT(summary.sub_increments, 0);
+  int sub = 0;
+  for (const auto& [stage, reports] : by_stage) {
+    const int n = reports.front().steps;
+    int next = 1;
+    for (const StepReport& r : reports) {
+      if (r.planned_step == 0) {
+        ++sub;
+        EXPECT_GT(r.load_factor, static_cast<double>(next - 1) / n) << "stage " << stage;
+        EXPECT_LT(r.load_factor, static_cast<double>(next) / n) << "stage " << stage;
+        continue;
+      }
+      EXPECT_EQ(r.planned_step, next) << "stage " << stage;
+      EXPECT_EQ(r.load_factor, next == n ? 1.0 : static_cast<double>(next) / n);
+      EXPECT_EQ(r.stage_end, next == n);
+      ++next;
+    }
+    EXPECT_EQ(next, n + 1) << "stage " << stage << ": a planned level has no result";
+  }
+  EXPECT_EQ(sub, summary.sub_increments);
 }
 
 // The interface VTK series follows `output.vtk` and `output.every` like the solution series
