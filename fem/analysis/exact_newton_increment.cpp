@@ -71,7 +71,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     }
     summary.assembly_seconds += seconds_since(t0);
     if (reference < 0) {
-      reference = std::max({full_norm, F_step.norm2(), force_scale});
+      reference = std::max({full_norm, F_step.norm2(), force_scale, reaction_scale});
       if (reference == 0.0) return true; // nothing acts on the bodies
     }
     const double floor = std::max(copt.tolerance * reference, roundoff_factor * roundoff);

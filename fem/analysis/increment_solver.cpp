@@ -78,7 +78,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     }
     summary.assembly_seconds += seconds_since(t0);
     if (log.iterations == 0) {
-      reference = std::max({norm, F_step.norm2(), force_scale});
+      reference = std::max({norm, F_step.norm2(), force_scale, reaction_scale});
       if (reference == 0.0 && change == 0.0) return true; // nothing acts on the body
     }
     reference = std::max(reference, force_scale);

@@ -166,6 +166,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         reaction.axpy(-1.0, R);
       }
       reaction_all = reaction.gather_all();
+      reaction_scale = reaction.norm2();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
       summary.assembly_seconds += seconds_since(t0);
 

@@ -98,6 +98,11 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
+  /// Without it, an increment that the predictor already solves (a linear model under
+  /// proportional loading) measured its residual against its own round-off and never
+  /// converged.
+  double reaction_scale = 0;
   // generalized_newton: the bulk condensed onto the interface DOFs, refactorised only when
   // the bulk tangent or the constrained DOFs change.
   std::unique_ptr<contact::InterfaceNewtonSystem> newton_system;
