@@ -1,5 +1,5 @@
 #pragma once
-/// Node-to-node interface forces and tangents for one interface (formulation.md §1–5).
+/// Node-to-node interface forces and tangents for one interface (docs/formulation.md §1–5).
 ///
 /// For pair i with weight A_i and local frame Q_i = [n, t1 (, t2)] (columns), the local jump
 /// is ĝ = Q_iᵀ (u_b − u_a) + g0 n, g0 = the interface's initial gap + the pair's gap; the
