@@ -134,7 +134,8 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
         gt.values.push_back(r.jump(c));
       }
       beta.values.push_back(r.beta);
-      status.values.push_back(static_cast<double>(r.status)); // 0 open, 1 stick, 2 slip
+      // 0 open, 1 stick, 2 slip, 3 bonded (β > 0)
+      status.values.push_back(static_cast<double>(contact::reported_status(r)));
     }
     std::vector<Index> cells(interface_meshes_[k].num_cells());
     for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c)
