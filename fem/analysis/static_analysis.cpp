@@ -136,15 +136,32 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         std::ostringstream msg;
         msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
             << stage.increments << " (load factor " << done << " -> " << lambda << " after "
-            << level << " cut-backs): " << log.failure << "; relative residual history:";
-        for (double h : log.history)
-          msg << " " << h;
+            << level << " cut-backs): " << log.failure << "; relative residual history";
+        // The first and last few residuals tell how it went (diverged, stalled, cycled); the
+        // whole history, hundreds of values after cut-backs, goes to the error's details.
+        const std::size_t n = log.history.size(), shown = 3;
+        std::ostringstream full;
+        full << "relative residual history of the failed increment (" << n << " values):\n";
+        for (std::size_t i = 0; i < n; ++i)
+          full << i + 1 << " " << log.history[i] << "\n";
+        if (n > 2 * shown) {
+          msg << " (" << n << " values, first and last " << shown << "):";
+          for (std::size_t i = 0; i < shown; ++i)
+            msg << " " << log.history[i];
+          msg << " ...";
+          for (std::size_t i = n - shown; i < n; ++i)
+            msg << " " << log.history[i];
+        } else {
+          msg << ":";
+          for (double h : log.history)
+            msg << " " << h;
+        }
         msg << "; multiplier change " << log.contact
             << ". To get through: more increments in this stage (smaller steps), "
             << (beta_can_change ? "a larger adhesion_viscosity (debonding snap-backs), " : "")
             << "or a looser contact_solver.tolerance if the residual history stalls just above "
                "it.";
-        throw SolverError(msg.str());
+        throw IncrementFailure(msg.str(), full.str());
       }
       for (const auto& ia : interfaces)
         ia->commit();

@@ -11,10 +11,12 @@
 #include "contact/solver/interface_assembler.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/error.hpp"
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bipot {
@@ -74,13 +76,26 @@ struct RunSummary {
   double output_seconds = 0;   ///< VTK and CSV
 };
 
+/// An increment that did not converge after its cut-backs. The message names the stage, step
+/// and the first and last few residuals; `details()` holds the whole residual history, too
+/// long to print (the apps write it to failure.log in the failed results folder).
+class IncrementFailure : public SolverError {
+public:
+  IncrementFailure(const std::string& message, std::string details)
+      : SolverError(message), details_(std::move(details)) {}
+  const std::string& details() const { return details_; }
+
+private:
+  std::string details_;
+};
+
 class StaticAnalysis {
 public:
   /// `writer` (optional, not owned) receives every converged increment.
   StaticAnalysis(const Model& model, AnalysisOptions options = {}, ResultWriter* writer = nullptr);
   ~StaticAnalysis();
 
-  /// Runs every stage. Throws SolverError naming the stage, step, iteration and residual
+  /// Runs every stage. Throws IncrementFailure naming the stage, step, iteration and residual
   /// history if an increment does not converge; increments converged before stay written.
   RunSummary run(const std::function<void(const StepReport&)>& on_step = {});
 

@@ -419,6 +419,68 @@ TEST(ContactBlock, LinearModelInSeveralIncrementsEqualsOne) {
   EXPECT_LT(test::relative_difference(solve(3), solve(1)), 1e-12);
 }
 
+// reactions.csv has a column only for the (set, component) pairs some stage constrains, and
+// each set sums the reactions of its own nodes: the corner node shared by `left` and `bottom`
+// counts in both.
+TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
+  const std::string stages = "  - name: press\n    increments: 1\n    boundary_conditions:\n"
+                             "      - {set: bottom, component: x, value: 0}\n"
+                             "      - {set: bottom, component: y, value: 0}\n"
+                             "      - {set: top, component: y, value: -1.0e-3}\n"
+                             "  - name: hold\n    increments: 1\n    boundary_conditions:\n"
+                             "      - {set: bottom, component: y, value: 0}\n"
+                             "      - {set: left, component: x, value: 0}\n"
+                             "      - {set: top, component: y, value: -1.0e-3}\n";
+  const std::string dir = "contact_block_reactions";
+  if (mpi_rank() == 0) std::filesystem::remove_all(dir);
+  barrier();
+  // No interface: one conforming body of two regions.
+  const std::string text = block_input("", "", stages) + "output: {directory: " + dir + "}\n";
+  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  std::vector<double> bottom, left, top;
+  {
+    ResultWriter writer(model, mpi_rank(), mpi_size());
+    StaticAnalysis analysis(model, {}, &writer);
+    analysis.run();
+    bottom = analysis.reaction("bottom");
+    left = analysis.reaction("left");
+    top = analysis.reaction("top");
+  }
+  barrier();
+  std::ifstream csv(dir + "/reactions.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent.
+  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy");
+  std::vector<double> last;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    last.clear();
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      last.push_back(std::stod(cell));
+    ++rows;
+  }
+  ASSERT_EQ(rows, 2);
+  ASSERT_EQ(last.size(), 8u);
+  // The CSV keeps 17 digits: the values are the analysis's, exactly.
+  EXPECT_EQ(last[4], bottom[0]);
+  EXPECT_EQ(last[5], bottom[1]);
+  EXPECT_EQ(last[6], left[0]);
+  EXPECT_EQ(last[7], top[1]);
+  // Pressed: the top pushes down, the bottom holds it up, to the solver tolerance.
+  EXPECT_LT(last[7], 0.0);
+  EXPECT_NEAR(last[5] + last[7], 0.0, 1e-8 * std::abs(last[7]));
+  // In the hold stage only `left` holds x and nothing else acts along x, so its x reactions
+  // sum to zero. Its bottom corner is also a node of `bottom`, whose x column is that node's
+  // reaction alone (its other nodes are free in x): not zero, because the shared node counts
+  // in both sets.
+  EXPECT_NEAR(last[6], 0.0, 1e-8 * std::abs(last[7]));
+  EXPECT_GT(std::abs(last[4]), 1e-3 * std::abs(last[7]));
+  barrier(); // every rank has read before the next test may clean up
+}
+
 // The interface VTK series follows `output.vtk` and `output.every` like the solution series
 // (it used to write every step whatever they said); its CSV keeps every step.
 TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
