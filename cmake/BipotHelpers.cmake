@@ -5,6 +5,7 @@ function(bipot_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(bipot_${name} ${ARG_SOURCES})
   add_library(bipot::${name} ALIAS bipot_${name})
+  set_property(GLOBAL APPEND PROPERTY BIPOT_LIBRARIES bipot_${name})
   set_target_properties(bipot_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME bipot_${name})
   target_include_directories(bipot_${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
