@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages bipot needs (only those missing), then configures and builds
 # Release into build/. Idempotent: a second run only rebuilds what changed.
-# Usage: scripts/setup.sh            (BUILD_DIR, BUILD_TYPE and JOBS may be set in the environment)
+# Usage: scripts/setup.sh [--packages-only]
+#   (BUILD_DIR, BUILD_TYPE, JOBS and BIPOT_SANITIZE may be set in the environment)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${BUILD_DIR:-$root/build}"
@@ -37,8 +38,12 @@ if [ ${#missing[@]} -gt 0 ]; then
     || { echo "setup: apt-get failed, see ${TMPDIR:-/tmp}/bipot-apt.log" >&2; exit 1; }
 fi
 
+if [ "${1:-}" = "--packages-only" ]; then exit 0; fi
+
 mkdir -p "$build_dir"
-cmake -S "$root" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type" > "$build_dir/configure.log" 2>&1 \
+cmake_args=(-DCMAKE_BUILD_TYPE="$build_type")
+[ -z "${BIPOT_SANITIZE:-}" ] || cmake_args+=(-DBIPOT_SANITIZE="$BIPOT_SANITIZE")
+cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" > "$build_dir/configure.log" 2>&1 \
   || { cat "$build_dir/configure.log" >&2; exit 1; }
 echo "setup: building in $build_dir with $jobs jobs"
 cmake --build "$build_dir" -j "$jobs"
