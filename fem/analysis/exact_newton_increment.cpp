@@ -19,7 +19,6 @@ using namespace analysis_detail;
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log) {
   const contact::ContactSolverOptions& copt = model.contact_solver;
   const contact::InterfaceNewtonSystem& sys = *newton_system;
-  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
   const Index nI = sys.num_dofs(), n = sys.size();
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);
@@ -49,12 +48,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
     R.finish_assembly();
     if (refactor) K->finish_assembly();
-    {
-      double* r = R.owned_values();
-      const double* f = F_step.owned_values();
-      for (Index i = 0; i < n_owned; ++i)
-        if (!constraints.is_constrained(first + i)) r[i] += f[i];
-    }
+    add_step_loads(constraints);
     // The whole residual with the interface forces at u: the reference of the increment and,
     // for a nonlinear bulk, the test of the outer loop.
     for (const auto& ia : interfaces)

@@ -213,6 +213,15 @@ struct StaticAnalysis::Impl {
     std::string failure;
   };
 
+  // R += F_step on the DOFs `constraints` leaves free (their rows are the equilibrium).
+  void add_step_loads(const Constraints& constraints) {
+    const Index first = dist.first_owned_dof();
+    double* r = R.owned_values();
+    const double* f = F_step.owned_values();
+    for (Index i = 0; i < dist.num_owned_dofs(); ++i)
+      if (!constraints.is_constrained(first + i)) r[i] += f[i];
+  }
+
   bool solve_increment_exact(double lambda, double dtau, IncrementLog& log);
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
   static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
