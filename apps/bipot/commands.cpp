@@ -1,6 +1,8 @@
 #include "apps/bipot/commands.hpp"
 #include "apps/common/app_support.hpp"
+#include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
+#include "apps/common/step_text.hpp"
 
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/solver/contact_solver_options.hpp"
@@ -10,7 +12,6 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
-#include "fem/input/condition_checks.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "fem/linalg/linear_solver.hpp"
@@ -49,14 +50,6 @@ std::string one_file(const std::vector<std::string>& args, const char* usage) {
   return files[0];
 }
 
-// The model of `file`, also checked for what needs its mesh and build_model does not check.
-Model checked_model(const std::string& file) {
-  Model model = build_model(read_problem_file(file));
-  const auto problems = conflicting_conditions(model.spec, model.mesh);
-  if (!problems.empty()) throw InputError(problems);
-  return model;
-}
-
 } // namespace
 
 void print_usage() {
@@ -77,14 +70,16 @@ void print_usage() {
 int check_command(const std::vector<std::string>& args) {
   if (wants_help(args)) {
     if (root())
-      std::cout << "bipot check FILE.yaml\n  Reads FILE.yaml, builds its mesh and materials and "
-                   "reports every problem as file:line:col: key.path: message.\n";
+      std::cout << "bipot check FILE.yaml\n  Reads FILE.yaml, builds its mesh and materials, "
+                   "checks the mesh (non-finite\n  coordinates, inverted cells, coincident or "
+                   "unused nodes) and that every stage holds\n  every body, and reports every "
+                   "problem as file:line:col: key.path: message.\n";
     return 0;
   }
   const std::string file = one_file(args, "bipot check FILE.yaml");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = checked_model(file);
+    const Model model = checked_model(read_problem_file(file));
     if (root())
       std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
                 << model.mesh.num_cells() << " cells, " << model.spec.stages.size() << " stage"
@@ -125,7 +120,7 @@ int run_command(const std::vector<std::string>& args) {
   const std::string file = one_file(files, "bipot run FILE.yaml [--output DIR] [--quiet]");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = checked_model(file);
+    const Model model = checked_model(read_problem_file(file));
     RunFolder folder(output.empty() ? model.spec.output.directory : output, model.spec, "bipot");
     RunSummary summary;
     {
@@ -138,11 +133,11 @@ int run_command(const std::vector<std::string>& args) {
       summary = analysis.run([&](const StepReport& r) {
         folder.converged(r);
         if (!root() || quiet) return;
-        // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
+        // Stage progress rather than "step k of n": sub-increments add steps to the plan.
         std::printf("  stage %-12s step %3d %4.0f%%  t = %-9.4g  newton %2d  linear %4d  "
-                    "residual %.2e  %.2f s\n",
+                    "residual %.2e  %.2f s%s\n",
                     r.stage.c_str(), r.step, 100.0 * r.load_factor, r.time, r.iterations,
-                    r.linear_iterations, r.residual, r.seconds);
+                    r.linear_iterations, r.residual, r.seconds, app::step_flags(r).c_str());
         std::fflush(stdout);
       });
     }
@@ -156,6 +151,7 @@ int run_command(const std::vector<std::string>& args) {
                   summary.steps, summary.linear_solves, summary.linear_iterations,
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
                   summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+      std::cout << app::stepping_summary(summary, "bipot") << "\n";
       std::cout << "bipot: results in " << folder.directory()
                 << " (ParaView: " << folder.directory() << "/solution.pvd)\n";
     }

@@ -143,9 +143,17 @@ void prepare_error_handling() {
   MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
 }
 
+namespace {
+// What an error carries beyond its message (the residual history of a failed increment).
+std::string details_of(const std::exception& e) {
+  const auto* failure = dynamic_cast<const IncrementFailure*>(&e);
+  return failure ? failure->details() : std::string();
+}
+} // namespace
+
 int report_error(const std::exception& e, int code, const std::string& program) {
   if (!every_rank_failed(kErrorAgreementSeconds)) {
-    const std::string where = fail_open_run_folder(e.what());
+    const std::string where = fail_open_run_folder(e.what(), details_of(e));
     std::cerr << error_text(e, program + ": rank " + std::to_string(mpi_rank()) + " of " +
                                    std::to_string(mpi_size()) + ": ");
     if (!where.empty()) std::cerr << program << ": " << where << "\n";
@@ -154,7 +162,7 @@ int report_error(const std::exception& e, int code, const std::string& program) 
     MPI_Abort(MPI_COMM_WORLD, code);
   }
   if (mpi_rank() != 0) return code;
-  const std::string where = fail_open_run_folder(e.what());
+  const std::string where = fail_open_run_folder(e.what(), details_of(e));
   std::cerr << error_text(e, program + ": ");
   if (!where.empty()) std::cerr << program << ": " << where << "\n";
   return code;

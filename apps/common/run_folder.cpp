@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kStatusFile = "status.txt";
+constexpr const char* kFailureLog = "failure.log";
 
 // The run whose folder is open on this rank: between RunFolder's constructor and finish(),
 // for the error handling, which runs after the stack (and the RunFolder) has unwound.
@@ -216,7 +217,7 @@ void RunFolder::finish() {
   open_run.reset();
 }
 
-std::string fail_open_run_folder(const std::string& message) {
+std::string fail_open_run_folder(const std::string& message, const std::string& details) {
   if (!open_run) return "";
   const OpenRun run = std::move(*open_run);
   open_run.reset();
@@ -245,6 +246,11 @@ std::string fail_open_run_folder(const std::string& message) {
   const fs::path failed = failed_folder(run.target);
   try {
     write_status(run, run.working, "failed", fields, message);
+    if (!details.empty()) {
+      std::ofstream log(run.working / kFailureLog);
+      log << message << "\n\n" << details;
+      if (details.back() != '\n') log << "\n";
+    }
     fs::remove_all(failed);
     fs::rename(run.working, failed);
   } catch (const std::exception& e) {
@@ -255,6 +261,8 @@ std::string fail_open_run_folder(const std::string& message) {
                                          " (see its " + kStatusFile + ")"
                                    : "no increment converged; " + (failed / kStatusFile).string() +
                                          " records the failure";
+  if (!details.empty())
+    where += "; the whole residual history is in " + (failed / kFailureLog).string();
   if (fs::exists(run.target, ec))
     where += "; " + run.target.string() + " keeps the results of the last finished run";
   return where;

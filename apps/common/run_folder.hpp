@@ -41,10 +41,12 @@ private:
 };
 
 /// The error handling's side of RunFolder: if a run folder is open on this rank, writes
-/// status `failed` (the increment after the last converged one, and `message`) into it,
-/// moves it to `<dir>.failed` (replacing an older one) and returns a sentence saying where
-/// the converged increments are; "" when no folder was open. Never throws. Called on rank 0
-/// when every rank failed, or on the failing rank when it failed alone.
-std::string fail_open_run_folder(const std::string& message);
+/// status `failed` (the increment after the last converged one, and `message`) into it, and
+/// when `details` is not empty (the whole residual history of IncrementFailure) writes
+/// `message` and `details` to `failure.log` beside it; moves the folder to `<dir>.failed`
+/// (replacing an older one) and returns a sentence saying where the converged increments
+/// (and failure.log) are; "" when no folder was open. Never throws. Called on rank 0 when
+/// every rank failed, or on the failing rank when it failed alone.
+std::string fail_open_run_folder(const std::string& message, const std::string& details = "");
 
 } // namespace bipot::app

@@ -2,7 +2,9 @@
 // with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
 // problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
 #include "apps/common/app_support.hpp"
+#include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
+#include "apps/common/step_text.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -35,7 +37,7 @@ void usage() {
          "        python3-matplotlib, pullout_curve.png and profiles.png. DIR is replaced\n"
          "        only when the run finishes: a failed run leaves it as it was and its\n"
          "        converged steps in DIR.failed\n"
-         "  pile_pullout check FILE.yaml     validate the file and build the model\n"
+         "  pile_pullout check FILE.yaml     validate the file, build and check the model\n"
          "  pile_pullout describe [--markdown]   the input file's keys\n\n"
          "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
          "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure (converged steps are\n"
@@ -66,7 +68,7 @@ void plot(const std::string& dir, const std::string& label) {
 int run(const std::string& file, const std::string& output, bool quiet, bool plots) {
   pile::PileSpec spec = pile::read_pile_file(file);
   if (!output.empty()) spec.output.directory = output;
-  const Model model = build_model(pile::make_problem(spec));
+  const Model model = app::checked_model(pile::make_problem(spec));
   const bool root = mpi_rank() == 0;
   app::RunFolder folder(spec.output.directory, model.spec, "pile_pullout");
   ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
@@ -83,13 +85,10 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
     results.record(r, analysis);
     if (!root || quiet) return;
     const auto h = results.last();
-    // Stage progress rather than "step k of n": cut-backs add steps beyond the plan.
-    std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d%s  "
-                "%.2f s%s\n",
+    // Stage progress rather than "step k of n": sub-increments add steps to the plan.
+    std::printf("  %-12s step %3d %4.0f%%  head %8.3f mm  force %9.2f kN  newton %3d  %.2f s%s\n",
                 r.stage.c_str(), r.step, 100.0 * r.load_factor, 1e3 * h.displacement, h.force,
-                r.iterations, r.cutbacks ? (" cut " + std::to_string(r.cutbacks)).c_str() : "",
-                r.seconds,
-                r.staggered ? "  (jump: staggered)" : (r.unstable ? "  (unstable)" : ""));
+                r.iterations, r.seconds, app::step_flags(r).c_str());
     std::fflush(stdout);
   });
   const double peak_mb = max_all(app::peak_memory_mb());
@@ -105,6 +104,7 @@ int run(const std::string& file, const std::string& output, bool quiet, bool plo
               summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
               summary.matrix_setups, summary.seconds, summary.assembly_seconds,
               summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+  std::cout << app::stepping_summary(summary, "pile_pullout") << "\n";
   // List what is there: a bonded shaft has no profiles to plot.
   const std::string& dir = folder.directory();
   std::string files = "head_force.csv, profiles.csv";
@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
   if (command == "check")
     return guarded([&] {
       const bipot::Model model =
-          bipot::build_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
+          app::checked_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
       if (root)
         std::cout << files[0] << ": ok (" << model.mesh.num_nodes() << " nodes, "
                   << model.mesh.num_cells() << " cells)\n";

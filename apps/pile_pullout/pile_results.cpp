@@ -11,17 +11,6 @@ namespace bipot::pile {
 
 namespace {
 
-const char* status_name(contact::ContactStatus s) {
-  switch (s) {
-  case contact::ContactStatus::Open:
-    return "open";
-  case contact::ContactStatus::Stick:
-    return "stick";
-  default:
-    return "slip";
-  }
-}
-
 std::size_t interface_index(const Model& model, const std::string& name) {
   for (std::size_t k = 0; k < model.interfaces.size(); ++k)
     if (model.interfaces[k].name == name) return k;
@@ -75,14 +64,14 @@ void PileResults::record(const StepReport& report, const StaticAnalysis& analysi
 
   // Profiles: the end of the geostatic and installation stages, the pull-out steps that first
   // reach each requested head displacement, and the last step.
-  bool due = !pullout && report.step == report.steps;
+  bool due = !pullout && report.stage_end;
   if (pullout) {
     while (next_profile_ < profiles_at_mm_.size() &&
            head_mm >= profiles_at_mm_[next_profile_] * (1 - 1e-9)) {
       due = true;
       ++next_profile_;
     }
-    due = due || report.step == report.steps;
+    due = due || report.stage_end;
   }
   if (due) write_profile(report, analysis, head_mm);
 }
@@ -105,7 +94,8 @@ void PileResults::write_profile(const StepReport& report, const StaticAnalysis& 
     // of the pile relative to the soil, upward positive, is −g_t.
     std::snprintf(line, sizeof line, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s\n",
                   report.global_step, head_mm, -z(i), r.traction(1), r.r(0), r.beta,
-                  -1e3 * r.jump(1), 1e3 * r.jump(0), status_name(r.status), report.stage.c_str());
+                  -1e3 * r.jump(1), 1e3 * r.jump(0),
+                  contact::to_string(contact::reported_status(r)), report.stage.c_str());
     profiles_ << line;
   }
   profiles_.flush();

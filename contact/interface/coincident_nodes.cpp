@@ -1,5 +1,7 @@
 #include "contact/interface/coincident_nodes.hpp"
 
+#include "fem/mesh/node_grid.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -9,15 +11,6 @@
 namespace bipot::contact {
 
 namespace {
-
-using Key = std::array<std::int64_t, 3>;
-
-/// Grid bucket of a point; `h` keeps |x|/h well inside the int64 range.
-Key bucket(const std::array<double, 3>& x, double h) {
-  return {static_cast<std::int64_t>(std::floor(x[0] / h)),
-          static_cast<std::int64_t>(std::floor(x[1] / h)),
-          static_cast<std::int64_t>(std::floor(x[2] / h))};
-}
 
 double distance(const std::array<double, 3>& x, const std::array<double, 3>& y) {
   return std::sqrt((x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]) +
@@ -40,41 +33,20 @@ double bounding_box_diagonal(const Mesh& mesh) {
 std::vector<Index> match_coincident_nodes(const Mesh& mesh, const std::vector<Index>& nodes_a,
                                           const std::vector<Index>& nodes_b, double tol) {
   assert(tol > 0);
-  // Buckets no smaller than tol make every partner lie in one of the 27 neighbouring buckets;
-  // the lower bound on h avoids int64 overflow for coordinates far from the origin.
-  double extent = 0.0;
-  for (const auto& x : mesh.nodes)
-    for (double v : x)
-      extent = std::max(extent, std::abs(v));
-  const double h = std::max(2.0 * tol, extent * 1e-15);
-
-  std::vector<std::pair<Key, Index>> sorted_b;
-  sorted_b.reserve(nodes_b.size());
-  for (Index b : nodes_b)
-    sorted_b.emplace_back(bucket(mesh.nodes[b], h), b);
-  std::sort(sorted_b.begin(), sorted_b.end());
-
+  const NodeGrid grid(mesh, nodes_b, tol);
   std::vector<char> used(mesh.nodes.size(), 0);
   std::vector<Index> partner(nodes_a.size(), -1);
   for (std::size_t i = 0; i < nodes_a.size(); ++i) {
     const auto& xa = mesh.nodes[nodes_a[i]];
-    const Key k = bucket(xa, h);
     double best = std::numeric_limits<double>::infinity();
     Index best_b = -1;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const Key nk{k[0] + dx, k[1] + dy, k[2] + dz};
-          auto it = std::lower_bound(sorted_b.begin(), sorted_b.end(),
-                                     std::make_pair(nk, std::numeric_limits<Index>::min()));
-          for (; it != sorted_b.end() && it->first == nk; ++it) {
-            const double d = distance(xa, mesh.nodes[it->second]);
-            if (d <= tol && d < best && !used[it->second]) {
-              best = d;
-              best_b = it->second;
-            }
-          }
-        }
+    grid.for_each_near(xa, [&](Index b) {
+      const double d = distance(xa, mesh.nodes[b]);
+      if (d <= tol && d < best && !used[b]) {
+        best = d;
+        best_b = b;
+      }
+    });
     if (best_b >= 0) {
       used[best_b] = 1;
       partner[i] = best_b;

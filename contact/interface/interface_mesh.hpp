@@ -1,5 +1,5 @@
 #pragma once
-/// Node-to-node discretisation of interfaces (formulation.md §1, §5, §6): split a conforming
+/// Node-to-node discretisation of interfaces (docs/formulation.md §1, §5, §6): split a conforming
 /// mesh along the interfaces between regions (or pair two coincident facet sets), then give
 /// every matched node pair its weight A_i = ∫_Γ N_i dΓ and a local orthonormal frame.
 

@@ -18,7 +18,7 @@ enum class Pairing {
 ///   geometrically (Pairing::Coincident) or face each other along the normals of side a
 ///   (Pairing::Normal: two bodies apart before contact, e.g. a cylinder above a flat).
 /// Side a is body 1 (e.g. the pile), side b body 2 (e.g. the soil): the interface normal
-/// points from a into b (formulation.md §1).
+/// points from a into b (docs/formulation.md §1).
 struct InterfaceDefinition {
   std::string name;                      ///< used in messages and output
   std::string region_a, region_b;        ///< "between: [a, b]", or both empty

@@ -1,5 +1,5 @@
 #pragma once
-/// Weights and local frames of the node pairs of an interface (formulation.md §5, §6).
+/// Weights and local frames of the node pairs of an interface (docs/formulation.md §5, §6).
 
 #include "contact/interface/interface_mesh.hpp"
 #include "fem/element/kinematics.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-/// The Coulomb cone projection and the De Saxcé bipotential predictor (formulation.md §4):
+/// The Coulomb cone projection and the De Saxcé bipotential predictor (docs/formulation.md §4):
 /// the point-wise map r ↦ Proj_{K_μ̄}(r − ρ[Δg_t + (g_n + μ̄‖Δg_t‖) n]) iterated by the
 /// bipotential Uzawa solver, with generalized Jacobians for a semi-smooth Newton solver.
 ///

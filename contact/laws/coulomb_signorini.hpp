@@ -6,7 +6,7 @@
 
 namespace bipot::contact {
 
-/// Coulomb–Signorini law: RCCM with β ≡ 0 (formulation.md §3). With jump g = (g_n, g_t) and
+/// Coulomb–Signorini law: RCCM with β ≡ 0 (docs/formulation.md §3). With jump g = (g_n, g_t) and
 /// traction t = r (body 1 on body 2, compression positive):
 /// - Signorini: g_n ≥ 0, p = r_n ≥ 0, p g_n = 0;
 /// - Coulomb: ‖r_t‖ ≤ μ p; Δg_t = 0 if ‖r_t‖ < μ p, else r_t = −μ p Δg_t/‖Δg_t‖.

@@ -1,6 +1,6 @@
 #pragma once
 /// Abstract point-wise interface law and the point-wise map iterated by the contact solvers.
-/// Conventions (formulation.md §1–4): local frame [normal, tangential...]; jump g = u_2 − u_1
+/// Conventions (docs/formulation.md §1–4): local frame [normal, tangential...]; jump g = u_2 − u_1
 /// with g_n ≥ 0 admissible; t is the traction body 1 exerts on body 2, compression positive,
 ///     t = r − β² (C_n g_n n + C_t g_t),
 /// where r (contact pressure p = r_n ≥ 0 and friction r_t) lies in the Coulomb cone K_μ̄.
@@ -30,7 +30,7 @@ public:
   virtual double initial_adhesion() const { return 0.0; }
 
   /// New adhesion intensity β ∈ [0, β_old] after a pseudo-time step `dtau` (s) ending with the
-  /// jump `jump` = [g_n, g_t...] (m) (formulation.md §3, implicit Euler). Fills
+  /// jump `jump` = [g_n, g_t...] (m) (docs/formulation.md §3, implicit Euler). Fills
   /// `*dbeta_djump` (1/m, size of `jump`) with ∂β/∂jump, zero where β stays at β_old.
   virtual double update_adhesion(double beta_old, const LocalVector& jump, double dtau,
                                  LocalVector* dbeta_djump = nullptr) const;
@@ -83,7 +83,7 @@ struct InterfaceResponseDerivatives {
   LocalMatrix dt_dr;       ///< ∂t/∂(input r), = ∂Proj/∂τ
 };
 
-/// The point-wise map the bipotential solvers iterate (formulation.md §4): for the current
+/// The point-wise map the bipotential solvers iterate (docs/formulation.md §4): for the current
 /// jump (m) and irreversible traction `r` (kPa), with `old` the converged previous step,
 ///   β = update_adhesion(old.beta, jump, dtau),  μ̄ = friction_coefficient(β),
 ///   τ = r − ρ[Δg_t + (g_n + μ̄‖Δg_t‖) n] with Δg_t = g_t − old.g_t,

@@ -6,7 +6,7 @@
 
 namespace bipot::contact {
 
-/// Perfect bonding: g = 0 (formulation.md §3); the traction is whatever keeps the jump zero.
+/// Perfect bonding: g = 0 (docs/formulation.md §3); the traction is whatever keeps the jump zero.
 /// It is enforced exactly by the solver (constraint elimination of the jump), never by a
 /// penalty, so the point-wise functions are not used (evaluate() refuses a tied law). RCCM with
 /// huge w, C_n and C_t approaches it.

@@ -8,7 +8,7 @@
 namespace bipot::contact {
 
 /// RCCM law. With jump g = (g_n, g_t), traction t = r − β²(C_n g_n n + C_t g_t) (body 1 on
-/// body 2, compression positive; formulation.md §1–3):
+/// body 2, compression positive; docs/formulation.md §1–3):
 /// - Signorini with adhesion: g_n ≥ 0, p = r_n ≥ 0, p g_n = 0;
 /// - Coulomb with adhesion: ‖r_t‖ ≤ μ̄ p with μ̄ = μ(1 − β); stick (Δg_t = 0) inside the cone,
 ///   r_t = −μ̄ p Δg_t/‖Δg_t‖ on its boundary;
@@ -21,8 +21,8 @@ namespace bipot::contact {
 ///
 /// The seed paper (Terfaya, Raous, Berga 2010, eqs. (3)–(9), (20)–(22)) writes the normal gap
 /// with the opposite sign (u_n ≤ 0 admissible), keeps a general h(β) in the free energy (here
-/// h(β) = β, which gives ⟨E β − w⟩₊) and writes the predictor with velocities; formulation.md's
-/// signs and increments are used here.
+/// h(β) = β, which gives ⟨E β − w⟩₊) and writes the predictor with velocities; the signs and
+/// increments of docs/formulation.md are used here.
 /// References: M. Raous, L. Cangémi, M. Cocu, "A consistent model coupling adhesion, friction
 /// and unilateral contact", Comput. Methods Appl. Mech. Engrg. 177 (1999) 383–399;
 /// M. Raous, Y. Monerie, "Unilateral contact, friction and adhesion in composite materials",

@@ -13,9 +13,15 @@ void common_keys(ParamSchema& s, double default_factor) {
   s.real("augmentation_factor", "", "multiplies the automatic rho")
       .positive()
       .with_default(default_factor);
-  s.real("tolerance", "", "relative tolerance on the force residual and the multiplier change")
-      .positive()
+  // Below 1e-14 (about 50 ε) a relative residual is round-off of the sums that form it, not a
+  // measure of equilibrium: such a tolerance could only stall or pass by chance.
+  s.real("tolerance", "",
+         "relative tolerance on the force residual and the multiplier change; at least 1e-14, "
+         "what double precision can verify")
+      .at_least(1e-14)
       .less_than(1.0)
+      .because("below 1e-14 (about 50 machine epsilons) a relative residual is the round-off of "
+               "the sums that form it, which no solver can reduce")
       .with_default(1e-8);
   s.integer("max_cutbacks", "halvings of a non-converging increment before the run stops")
       .at_least(0)

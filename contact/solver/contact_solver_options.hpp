@@ -2,7 +2,7 @@
 /// How interfaces are enforced (the *solver*), chosen in YAML apart from the *law*.
 ///
 /// Both solvers iterate the bipotential fixed point r = Proj_{K_μ̄}(r − ρ[Δg_t + (g_n +
-/// μ̄‖Δg_t‖) n]) of formulation.md §4 together with bulk equilibrium. Inside each bulk solve
+/// μ̄‖Δg_t‖) n]) of docs/formulation.md §4 together with bulk equilibrium. Inside each bulk solve
 /// the interface force t(u; r̂) = Proj(r̂ − ρ G(u)) − β(u)² C g(u) is linearised in u with
 /// the projection's generalized Jacobian (a semi-smooth Newton step at fixed multiplier r̂).
 /// - bipotential_uzawa (the seed's algorithm): r̂ is frozen until equilibrium is reached,

@@ -25,6 +25,33 @@ Eigen::Matrix3d pair_frame(const InterfacePair& p, int dim) {
 }
 } // namespace
 
+PairStatus reported_status(const PairResult& result) {
+  if (result.beta > 0) return PairStatus::Bonded;
+  switch (result.status) {
+  case ContactStatus::Open:
+    return PairStatus::Open;
+  case ContactStatus::Stick:
+    return PairStatus::Stick;
+  case ContactStatus::Slip:
+    return PairStatus::Slip;
+  }
+  return PairStatus::Open;
+}
+
+const char* to_string(PairStatus status) {
+  switch (status) {
+  case PairStatus::Open:
+    return "open";
+  case PairStatus::Stick:
+    return "stick";
+  case PairStatus::Slip:
+    return "slip";
+  case PairStatus::Bonded:
+    return "bonded";
+  }
+  return "?";
+}
+
 InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLaw& law,
                                        const DofMap& dofs, const DofDistribution& dist)
     : iface_(iface), law_(law), dofs_(dofs), dim_(dofs.dofs_per_node()), frozen_law_(law) {

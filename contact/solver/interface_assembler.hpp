@@ -1,5 +1,5 @@
 #pragma once
-/// Node-to-node interface forces and tangents for one interface (formulation.md §1–5).
+/// Node-to-node interface forces and tangents for one interface (docs/formulation.md §1–5).
 ///
 /// For pair i with weight A_i and local frame Q_i = [n, t1 (, t2)] (columns), the local jump
 /// is ĝ = Q_iᵀ (u_b − u_a) + g0 n, g0 = the interface's initial gap + the pair's gap; the
@@ -36,6 +36,19 @@ struct PairResult {
   LocalVector traction; ///< total t (kPa)
   ContactStatus status = ContactStatus::Open;
 };
+
+/// Status of a pair as the outputs report it (VTK `status` codes, profile names): while its
+/// adhesion is active (β > 0; tied pairs have β = 1) a pair is Bonded whatever branch the
+/// projection took — with μ̄ = μ(1 − β), a sound bond under shear sits on the frictionless
+/// "slip" branch although nothing slides. Otherwise its contact branch
+/// (docs/formulation.md §4).
+enum class PairStatus { Open = 0, Stick = 1, Slip = 2, Bonded = 3 };
+
+/// Bonded when result.beta > 0, else result.status.
+PairStatus reported_status(const PairResult& result);
+
+/// "open", "stick", "slip", "bonded".
+const char* to_string(PairStatus status);
 
 class InterfaceAssembler {
 public:
@@ -83,7 +96,7 @@ public:
   /// force body 1 exerts on body 2 at shared nodes (the caller computes it from body 1's
   /// cells: minus their internal force plus their body forces). Sets each pair's traction
   /// Qᵀ F / A_i (kPa; r = traction, p = its normal part, compression positive), β = 1,
-  /// status stick, and the resultant.
+  /// status stick (reported as bonded: reported_status()), and the resultant.
   void set_tied_forces(const std::vector<double>& force_all);
   /// Staggered fallback: evaluate() holds each pair's β at `beta` (no adhesion update, the
   /// law wrapped in FrozenAdhesion) until unfreeze_adhesion().

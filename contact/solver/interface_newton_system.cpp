@@ -100,7 +100,19 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
         (*J)(m + r, s.a + c) -= Cx(r, c);
       }
     }
-    J->block(m, m, d, d) += Eigen::MatrixXd::Identity(d, d) - Eigen::MatrixXd(der.dr_dr);
+    const Eigen::MatrixXd dF_dlambda = Eigen::MatrixXd::Identity(d, d) - der.dr_dr;
+    J->block(m, m, d, d) += dF_dlambda;
+    // A component that the law leaves free (stick: ∂F_λ/∂λ = 0) and that acts only on
+    // prescribed DOFs (both nodes held in its direction, e.g. a pile head pair whose two copies
+    // are pulled together) is undetermined: any value satisfies the equations and the
+    // reactions take the force. Fix its step by its own row (a zero column otherwise makes J
+    // singular).
+    for (int c = 0; c < d; ++c) {
+      bool acts = dF_dlambda.col(c).norm() != 0.0;
+      for (int r = 0; r < d && !acts; ++r)
+        acts = Q(r, c) != 0.0 && (!constrained[s.b + r] || !constrained[s.a + r]);
+      if (!acts) (*J)(m + c, m + c) += 1.0;
+    }
   }
 }
 

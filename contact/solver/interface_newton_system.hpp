@@ -12,10 +12,12 @@
 ///
 /// f_c puts +Q_i (λ_i + A_i a_i) on node b and its opposite on node a, a_i = −β²(C_n g_n n +
 /// C_t g_t) the adhesive traction with β = β(jump) the implicit update. F_λ = 0 is the
-/// bipotential fixed point of formulation.md §4, hence the interface law itself. Its exact
+/// bipotential fixed point of docs/formulation.md §4, hence the interface law itself. Its exact
 /// generalized Jacobian, from the projection's and the β update's derivatives
 /// (InterfaceResponseDerivatives), makes the iteration locally quadratic; in stick
-/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0.
+/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0. A
+/// stuck component acting only on prescribed DOFs is undetermined; its row also fixes its own
+/// step (see add()).
 
 #include "contact/solver/interface_assembler.hpp"
 

@@ -7,11 +7,10 @@
 // condensed bulk residual with the prescribed increments, f_c acting on I only), reduces
 // exactly to S x = c + f_c(x) on I: the interior equations hold by construction. K is
 // factorised once per constrained set, R0 assembled once per increment, and a Newton
-// iteration costs O(|I|³), independent of the mesh interior. A nonlinear bulk repeats the
+// iteration costs O(|I|²) (GMRES on the factors of an earlier Newton matrix, ReusedLuSolver)
+// or O(|I|³) when it refactorises, independent of the mesh interior. A nonlinear bulk repeats the
 // condensation around each new bulk state (outer loop) until the assembled residual is met.
 #include "fem/analysis/detail/static_analysis_impl.hpp"
-
-#include <Eigen/LU>
 
 namespace bipot {
 
@@ -20,7 +19,6 @@ using namespace analysis_detail;
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log) {
   const contact::ContactSolverOptions& copt = model.contact_solver;
   const contact::InterfaceNewtonSystem& sys = *newton_system;
-  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
   const Index nI = sys.num_dofs(), n = sys.size();
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);
@@ -50,12 +48,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
     R.finish_assembly();
     if (refactor) K->finish_assembly();
-    {
-      double* r = R.owned_values();
-      const double* f = F_step.owned_values();
-      for (Index i = 0; i < n_owned; ++i)
-        if (!constraints.is_constrained(first + i)) r[i] += f[i];
-    }
+    add_step_loads(constraints);
     // The whole residual with the interface forces at u: the reference of the increment and,
     // for a nonlinear bulk, the test of the outer loop.
     for (const auto& ia : interfaces)
@@ -72,7 +65,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     }
     summary.assembly_seconds += seconds_since(t0);
     if (reference < 0) {
-      reference = std::max({full_norm, F_step.norm2(), force_scale});
+      reference = std::max({full_norm, F_step.norm2(), force_scale, reaction_scale});
       if (reference == 0.0) return true; // nothing acts on the bodies
     }
     const double floor = std::max(copt.tolerance * reference, roundoff_factor * roundoff);
@@ -95,6 +88,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       summary.setup_seconds += seconds_since(t0);
       ++summary.matrix_setups;
       schur_ready = true;
+      newton_matrix.reset(); // S changed: the old Newton matrix is no preconditioner
       schur_constrained = constrained_dofs;
     }
     t0 = std::chrono::steady_clock::now();
@@ -139,9 +133,13 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
         return false;
       }
       t0 = std::chrono::steady_clock::now();
-      dz = J.partialPivLu().solve(-F);
+      const int factorizations = newton_matrix.factorizations();
+      dz = newton_matrix.solve(J, -F);
       summary.solve_seconds += seconds_since(t0);
       ++summary.linear_solves;
+      summary.matrix_setups += newton_matrix.factorizations() - factorizations;
+      summary.linear_iterations += newton_matrix.last_iterations();
+      log.linear_iterations += newton_matrix.last_iterations();
       if (!dz.allFinite()) {
         log.failure = "the generalized Jacobian is singular";
         return false;

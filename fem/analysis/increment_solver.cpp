@@ -17,11 +17,7 @@ double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, dou
     ia->add_to_system(constraints, nullptr, R);
   }
   R.finish_assembly();
-  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
-  double* r = R.owned_values();
-  const double* f = F_step.owned_values();
-  for (Index i = 0; i < n_owned; ++i)
-    if (!constraints.is_constrained(first + i)) r[i] += f[i];
+  add_step_loads(constraints);
   return R.norm2();
 }
 
@@ -29,7 +25,6 @@ double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, dou
 // load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
 bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log) {
   if (newton_system) return solve_increment_exact(lambda, dtau, log);
-  const Index first = dist.first_owned_dof(), n_owned = dist.num_owned_dofs();
   const contact::ContactSolverOptions& copt = model.contact_solver;
   const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
   const double tolerance = has_contact ? copt.tolerance : options.residual_tolerance;
@@ -65,10 +60,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
       ia->add_to_system(constraints, need_matrix ? K.get() : nullptr, R);
     R.finish_assembly();
     if (need_matrix) K->finish_assembly();
-    double* r = R.owned_values();
-    const double* f = F_step.owned_values();
-    for (Index i = 0; i < n_owned; ++i)
-      if (!constraints.is_constrained(first + i)) r[i] += f[i];
+    add_step_loads(constraints);
     const double norm = R.norm2();
     double change = 0, force_scale = 0, roundoff = 0;
     for (const auto& ia : interfaces) {
@@ -78,7 +70,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     }
     summary.assembly_seconds += seconds_since(t0);
     if (log.iterations == 0) {
-      reference = std::max({norm, F_step.norm2(), force_scale});
+      reference = std::max({norm, F_step.norm2(), force_scale, reaction_scale});
       if (reference == 0.0 && change == 0.0) return true; // nothing acts on the body
     }
     reference = std::max(reference, force_scale);

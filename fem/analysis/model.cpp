@@ -129,6 +129,9 @@ Mesh build_mesh(const MeshSpec& spec, int dim) {
   if (dim == 3) b.z = spec.z;
   b.cell = parse_cell(spec.cell);
   b.block_regions = spec.block_regions;
+  for (Diagonals d :
+       {Diagonals::Right, Diagonals::Left, Diagonals::Alternating, Diagonals::Crossed})
+    if (spec.diagonals == to_string(d)) b.diagonals = d; // validated by the reader
   return make_block_mesh(b);
 }
 

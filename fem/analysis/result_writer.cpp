@@ -23,11 +23,16 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       directory_(directory.empty() ? model.spec.output.directory : std::move(directory)),
       rank_(rank) {
   std::filesystem::create_directories(directory_);
-  std::set<std::string> sets;
+  // Only the (set, component) pairs some stage constrains: the other components of a set's
+  // reaction are zero to the solver tolerance (the set is free that way): only noise.
+  std::set<std::pair<std::string, int>> constrained;
   for (const auto& stage : model.spec.stages)
     for (const auto& bc : stage.boundary_conditions)
-      sets.insert(bc.set);
-  reaction_sets_.assign(sets.begin(), sets.end());
+      constrained.insert({bc.set, bc.component});
+  for (const auto& [set, component] : constrained) {
+    if (reaction_sets_.empty() || reaction_sets_.back() != set) reaction_sets_.push_back(set);
+    reaction_columns_.push_back({reaction_sets_.size() - 1, component});
+  }
   if (model.spec.output.vtk)
     vtk_ = std::make_unique<VtkSeriesWriter>(directory_, "solution", rank, size);
   if (rank == 0) {
@@ -54,8 +59,12 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
         m.add_cell(f.type, ids, region);
       }
       interface_meshes_.push_back(std::move(m));
+      // Like the solution series, only with `output.vtk` and at the `every` steps; the CSV
+      // below takes every step.
       interface_vtk_.push_back(
-          std::make_unique<VtkSeriesWriter>(directory_, "interface_" + iface.name, 0, 1));
+          model.spec.output.vtk
+              ? std::make_unique<VtkSeriesWriter>(directory_, "interface_" + iface.name, 0, 1)
+              : nullptr);
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
       for (const auto& c : component_names(model))
         cols.push_back("force_" + c);
@@ -63,9 +72,9 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
           std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
     }
     std::vector<std::string> columns = {"stage", "step", "time", "load_factor"};
-    for (const auto& s : reaction_sets_)
-      for (const auto& c : component_names(model))
-        columns.push_back(s + "_f" + c);
+    const auto names = component_names(model);
+    for (const auto& [set, component] : reaction_columns_)
+      columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
   }
 }
@@ -82,14 +91,15 @@ std::string ResultWriter::pvd_path() const {
 void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& analysis) {
   std::vector<double> row = {static_cast<double>(report.stage_index + 1),
                              static_cast<double>(report.step), report.time, report.load_factor};
+  std::vector<std::vector<double>> reactions;
   for (const auto& s : reaction_sets_)
-    for (double f : analysis.reaction(s))
-      row.push_back(f);
+    reactions.push_back(analysis.reaction(s));
+  for (const auto& [set, component] : reaction_columns_)
+    row.push_back(reactions[set].at(component));
   if (reactions_) reactions_->write_row(row);
-  if (rank_ == 0) write_interfaces(report, analysis);
-
   const bool due =
-      report.global_step % model_.spec.output.every == 0 || report.step == report.steps;
+      report.global_step % model_.spec.output.every == 0 || report.stage_end;
+  if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
   std::vector<double> strain, stress;
@@ -103,7 +113,8 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   barrier();
 }
 
-void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis) {
+void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalysis& analysis,
+                                    bool vtk_due) {
   const int dim = spatial_dim(model_.kinematics);
   for (std::size_t k = 0; k < interface_csv_.size(); ++k) {
     const auto& ia = *analysis.interfaces()[written_[k]];
@@ -113,6 +124,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
     for (int c = 0; c < dim; ++c)
       row.push_back(f[c]);
     interface_csv_[k]->write_row(row);
+    if (!interface_vtk_[k] || !vtk_due) continue;
 
     const auto& results = ia.results();
     const std::size_t n = results.size();
@@ -129,7 +141,8 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
         gt.values.push_back(r.jump(c));
       }
       beta.values.push_back(r.beta);
-      status.values.push_back(static_cast<double>(r.status)); // 0 open, 1 stick, 2 slip
+      // 0 open, 1 stick, 2 slip, 3 bonded (β > 0)
+      status.values.push_back(static_cast<double>(contact::reported_status(r)));
     }
     std::vector<Index> cells(interface_meshes_[k].num_cells());
     for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c)

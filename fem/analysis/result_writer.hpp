@@ -1,16 +1,17 @@
 #pragma once
 /// Writes the results of every converged increment: a VTK time series of the bulk
 /// (displacement, strain, stress, owning rank; the writer adds the region id), a CSV of
-/// reaction forces per supported set, and per interface a VTK series of its line/surface
-/// mesh (tractions, contact pressure, opening, slip, β, status) and a CSV of the resultant
-/// force body 1 exerts on body 2. Files are complete after each step, so an interrupted run keeps
-/// every converged increment readable.
+/// reaction forces per supported set and constrained component, and per interface a VTK series of
+/// its line/surface mesh (tractions, contact pressure, opening, slip, β, status) and a CSV of the
+/// resultant force body 1 exerts on body 2. Files are complete after each step, so an interrupted
+/// run keeps every converged increment readable.
 
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bipot {
@@ -34,12 +35,16 @@ public:
   std::string pvd_path() const;
 
 private:
-  void write_interfaces(const StepReport& report, const StaticAnalysis& analysis);
+  /// The interface CSV rows, and with `vtk_due` their VTK series step.
+  void write_interfaces(const StepReport& report, const StaticAnalysis& analysis, bool vtk_due);
 
   const Model& model_;
   std::string directory_;
   int rank_;
-  std::vector<std::string> reaction_sets_;
+  std::vector<std::string> reaction_sets_; ///< sets with a displacement condition, sorted
+  /// The reactions.csv columns: (index into reaction_sets_, component), in the order of the
+  /// sets, then of the components; only the components some stage constrains.
+  std::vector<std::pair<std::size_t, int>> reaction_columns_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
   std::unique_ptr<CsvWriter> reactions_;
   // Per interface (rank 0): its line/surface mesh (nodes = pairs), VTK series and CSV.

@@ -74,10 +74,21 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     double done = 0.0, last_size = 0.0; // last_size: of the last converged increment
     std::vector<double> u_before_last;  // u at the start of the last converged increment
     int level = 0, step = 0;
+    // An increment's time includes its failed attempts: the clock restarts only when one
+    // converges.
+    auto step_start = std::chrono::steady_clock::now();
+    double failed_seconds = 0;
     while (done < 1.0 - 1e-12) {
-      const auto step_start = std::chrono::steady_clock::now();
+      const auto attempt_start = std::chrono::steady_clock::now();
       const double size = planned / std::pow(2.0, level);
-      const double lambda = std::min(1.0, done + size);
+      // Keep the plan: an increment never steps over the next planned load level k/n, so
+      // that after a cut-back the sub-increments end exactly on it and every planned level
+      // has its result (a sliver below 1e-9 of a planned increment is merged into it).
+      const int next_k = std::min(stage.increments,
+                                  static_cast<int>(std::floor(done * stage.increments + 1e-9)) + 1);
+      const double next_level =
+          next_k == stage.increments ? 1.0 : static_cast<double>(next_k) / stage.increments;
+      const double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
       const double dtau = (lambda - done) * stage.duration;
@@ -90,14 +101,24 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         for (std::size_t i = 0; i < u.size(); ++i)
           u[i] += extrapolation * (u[i] - u_before_last[i]);
       bool converged = solve_increment(lambda, dtau, log);
+      bool beta_can_change = false;
       if (!converged) {
         u = u_begin;
         matrix_ready = false;
         if (level < max_cutbacks) {
           ++level;
+          ++summary.cutbacks;
+          failed_seconds += seconds_since(attempt_start);
           continue;
         }
-        if (has_contact) {
+        // The fallback holds β and updates it: without adhesion left anywhere it would only
+        // repeat the failed solve.
+        beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
+          const std::vector<double> beta = ia->committed_adhesion();
+          return !ia->tied() &&
+                 std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
+        });
+        if (has_contact && beta_can_change) {
           IncrementLog staggered;
           converged = solve_increment_staggered(lambda, dtau, staggered);
           if (converged) {
@@ -115,12 +136,32 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         std::ostringstream msg;
         msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
             << stage.increments << " (load factor " << done << " -> " << lambda << " after "
-            << level << " cut-backs): " << log.failure << "; relative residual history:";
-        for (double h : log.history)
-          msg << " " << h;
+            << level << " cut-backs): " << log.failure << "; relative residual history";
+        // The first and last few residuals tell how it went (diverged, stalled, cycled); the
+        // whole history, hundreds of values after cut-backs, goes to the error's details.
+        const std::size_t n = log.history.size(), shown = 3;
+        std::ostringstream full;
+        full << "relative residual history of the failed increment (" << n << " values):\n";
+        for (std::size_t i = 0; i < n; ++i)
+          full << i + 1 << " " << log.history[i] << "\n";
+        if (n > 2 * shown) {
+          msg << " (" << n << " values, first and last " << shown << "):";
+          for (std::size_t i = 0; i < shown; ++i)
+            msg << " " << log.history[i];
+          msg << " ...";
+          for (std::size_t i = n - shown; i < n; ++i)
+            msg << " " << log.history[i];
+        } else {
+          msg << ":";
+          for (double h : log.history)
+            msg << " " << h;
+        }
         msg << "; multiplier change " << log.contact
-            << ". Converged increments are in the output directory.";
-        throw SolverError(msg.str());
+            << ". To get through: more increments in this stage (smaller steps), "
+            << (beta_can_change ? "a larger adhesion_viscosity (debonding snap-backs), " : "")
+            << "or a looser contact_solver.tolerance if the residual history stalls just above "
+               "it.";
+        throw IncrementFailure(msg.str(), full.str());
       }
       for (const auto& ia : interfaces)
         ia->commit();
@@ -142,6 +183,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         reaction.axpy(-1.0, R);
       }
       reaction_all = reaction.gather_all();
+      reaction_scale = reaction.norm2();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
       summary.assembly_seconds += seconds_since(t0);
 
@@ -150,7 +192,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.stage_index = static_cast<int>(s);
       rep.step = ++step;
       rep.steps = stage.increments;
+      rep.planned_step = lambda == next_level ? next_k : 0;
+      rep.stage_end = lambda == 1.0;
       rep.global_step = ++summary.steps;
+      if (rep.planned_step == 0) ++summary.sub_increments;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
       rep.iterations = log.iterations;
@@ -176,6 +221,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         last_resultant[k] = f;
       }
       rep.seconds = seconds_since(step_start);
+      rep.failed_seconds = failed_seconds;
+      summary.failed_seconds += failed_seconds;
       t0 = std::chrono::steady_clock::now();
       if (writer) writer->write_step(rep, *this_analysis);
       summary.output_seconds += seconds_since(t0);
@@ -184,6 +231,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       u_before_last = u_begin;
       done = lambda;
       if (level > 0) --level; // grow back towards the planned increment
+      step_start = std::chrono::steady_clock::now();
+      failed_seconds = 0;
     }
     F_prev.copy(F_cur);
     gravity_before = gravity_now;

@@ -11,10 +11,12 @@
 #include "contact/solver/interface_assembler.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/error.hpp"
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bipot {
@@ -30,8 +32,12 @@ struct AnalysisOptions {
 struct StepReport {
   std::string stage;
   int stage_index = 0;
-  int step = 0;           ///< increment within the stage, 1-based
-  int steps = 0;          ///< increments of the stage
+  int step = 0;  ///< increment within the stage, 1-based (sub-increments count)
+  int steps = 0; ///< planned increments of the stage
+  /// k when the increment ends on the planned load level k/steps; 0 for a sub-increment
+  /// (after a cut-back, the sub-increments end exactly on the next planned level).
+  int planned_step = 0;
+  bool stage_end = false; ///< the last increment of the stage (load factor 1)
   int global_step = 0;    ///< converged increments so far, 1-based
   double time = 0;        ///< pseudo-time at the end of the increment (s)
   double load_factor = 0; ///< λ within the stage, in (0, 1]
@@ -41,9 +47,10 @@ struct StepReport {
   /// Relative force residual at each iteration of the converged attempt (the convergence
   /// rate: quadratic for generalized_newton on a smooth branch).
   std::vector<double> residual_history;
-  double seconds = 0;    ///< wall time of the increment
-  int cutbacks = 0;      ///< halvings needed before this increment converged
-  int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)
+  double seconds = 0;        ///< wall time of the increment, its failed attempts included
+  double failed_seconds = 0; ///< of which in attempts that failed and were cut back
+  int cutbacks = 0;          ///< halvings needed before this increment converged
+  int uzawa_updates = 0;     ///< multiplier updates (bipotential_uzawa)
   /// β updates of the staggered fallback (0 unless the increment jumped: a debonding
   /// snap-back the monolithic iteration could not cross even at the smallest step).
   int staggered = 0;
@@ -58,6 +65,9 @@ struct RunSummary {
   int linear_iterations = 0;    ///< Krylov iterations over all solves
   int matrix_setups = 0;        ///< preconditioner/factorisation set-ups
   int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
+  int cutbacks = 0;             ///< failed attempts, each followed by a halving
+  int sub_increments = 0;       ///< converged increments that end between planned levels
+  double failed_seconds = 0;    ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time
   double assembly_seconds = 0; ///< cell loops, loads, reactions
@@ -66,13 +76,26 @@ struct RunSummary {
   double output_seconds = 0;   ///< VTK and CSV
 };
 
+/// An increment that did not converge after its cut-backs. The message names the stage, step
+/// and the first and last few residuals; `details()` holds the whole residual history, too
+/// long to print (the apps write it to failure.log in the failed results folder).
+class IncrementFailure : public SolverError {
+public:
+  IncrementFailure(const std::string& message, std::string details)
+      : SolverError(message), details_(std::move(details)) {}
+  const std::string& details() const { return details_; }
+
+private:
+  std::string details_;
+};
+
 class StaticAnalysis {
 public:
   /// `writer` (optional, not owned) receives every converged increment.
   StaticAnalysis(const Model& model, AnalysisOptions options = {}, ResultWriter* writer = nullptr);
   ~StaticAnalysis();
 
-  /// Runs every stage. Throws SolverError naming the stage, step, iteration and residual
+  /// Runs every stage. Throws IncrementFailure naming the stage, step, iteration and residual
   /// history if an increment does not converge; increments converged before stay written.
   RunSummary run(const std::function<void(const StepReport&)>& on_step = {});
 

@@ -110,9 +110,15 @@ std::optional<std::string> ParamSpec::check(const ParamValue& value) const {
   if (std::isnan(x) || below || above) {
     std::string msg = "value " + format_value(value) + " is out of range " + range_text();
     if (!units.empty()) msg += " " + units;
+    if (!range_reason.empty()) msg += ": " + range_reason;
     return msg;
   }
   return std::nullopt;
+}
+
+ParamSpec& ParamSpec::because(std::string reason) {
+  range_reason = std::move(reason);
+  return *this;
 }
 
 std::string ParamSpec::summary() const {

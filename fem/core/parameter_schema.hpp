@@ -33,6 +33,7 @@ struct ParamSpec {
   bool lower_open = true; ///< the bound itself is excluded (always true for an infinite bound)
   bool upper_open = true;
   std::vector<std::string> choices; ///< allowed strings, empty = any
+  std::string range_reason;         ///< why the range is what it is, for the message ("" = none)
 
   ParamSpec& with_default(ParamValue v);
   ParamSpec& positive();             ///< (0, inf)
@@ -42,6 +43,8 @@ struct ParamSpec {
   ParamSpec& at_most(double v);      ///< ..., v]
   ParamSpec& less_than(double v);    ///< ..., v)
   ParamSpec& one_of(std::vector<std::string> allowed);
+  /// Appended to the out-of-range message, for a bound that is not obvious.
+  ParamSpec& because(std::string reason);
 
   /// "[0, 1]", "(0, inf)", "" when unbounded.
   std::string range_text() const;

@@ -1,28 +1,12 @@
 #include "fem/input/condition_checks.hpp"
 
+#include "fem/input/detail/check_support.hpp"
 #include "fem/input/detail/sections.hpp"
 
-#include <cstdio>
 #include <set>
 #include <unordered_map>
 
 namespace bipot {
-
-namespace {
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", v);
-  return text;
-}
-
-std::vector<Index> nodes_of(const Mesh& mesh, const std::string& set) {
-  const auto it = mesh.node_sets.find(set); // a node set wins over a facet set of that name
-  if (it != mesh.node_sets.end()) return it->second;
-  return mesh.facet_sets.count(set) ? mesh.facet_set_nodes(set) : std::vector<Index>{};
-}
-
-} // namespace
 
 std::vector<std::string> conflicting_conditions(const ProblemSpec& spec, const Mesh& mesh) {
   std::vector<std::string> problems;
@@ -34,7 +18,7 @@ std::vector<std::string> conflicting_conditions(const ProblemSpec& spec, const M
     for (std::size_t j = 0; j < bcs.size(); ++j) {
       const DirichletSpec& bc = bcs[j];
       if (bc.component < 0 || bc.component >= static_cast<int>(components.size())) continue;
-      for (Index node : nodes_of(mesh, bc.set)) {
+      for (Index node : mesh.set_nodes(bc.set)) {
         const auto [at, inserted] = first.emplace(3 * node + bc.component, j);
         const DirichletSpec& other = bcs[at->second];
         if (inserted || other.set == bc.set || other.value == bc.value ||
@@ -43,8 +27,8 @@ std::vector<std::string> conflicting_conditions(const ProblemSpec& spec, const M
         problems.push_back(bc.where + ": " + mesh.describe_node(node) + " of set '" + bc.set +
                            "' is also in set '" + other.set + "', whose condition (" + other.where +
                            ") fixes its component " + components[bc.component] + " to " +
-                           number(other.value) + " in the same stage, this one to " +
-                           number(bc.value));
+                           input::number(other.value) + " in the same stage, this one to " +
+                           input::number(bc.value));
       }
     }
   }

@@ -26,6 +26,8 @@ struct MeshSpec {
   std::string file; ///< Gmsh .msh path, resolved against the input file's folder; or
   bool has_blocks = false;
   std::string cell = "quad4";
+  /// Triangle split of the blocks' quads: right, left, alternating or crossed (tri3 only).
+  std::string diagonals = "right";
   AxisSegments x, y, z;
   std::vector<std::string> block_regions;
   std::vector<BoxSetSpec> box_sets; ///< extra node sets: `sets: {name: {min, max}}`

@@ -3,6 +3,7 @@
 #include "fem/core/error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace bipot {
@@ -42,14 +43,21 @@ std::vector<Index> Mesh::facet_set_nodes(const std::string& name) const {
   return out;
 }
 
+std::vector<Index> Mesh::set_nodes(const std::string& name) const {
+  const auto it = node_sets.find(name);
+  return it != node_sets.end() ? it->second : facet_set_nodes(name);
+}
+
 std::string Mesh::describe_node(Index id) const {
-  const auto& x = nodes[id];
-  char buf[96];
-  if (dim == 2)
-    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g)", x[0], x[1]);
-  else
-    std::snprintf(buf, sizeof buf, " at (%.9g, %.9g, %.9g)", x[0], x[1], x[2]);
-  return "node " + std::to_string(id) + buf;
+  std::string at = " at (";
+  for (int i = 0; i < dim; ++i) {
+    char buf[32];
+    // "nan" whatever its sign bit: "-nan" reads as a negative number.
+    std::snprintf(buf, sizeof buf, "%.9g",
+                  std::isnan(nodes[id][i]) ? std::fabs(nodes[id][i]) : nodes[id][i]);
+    at += (i ? ", " : "") + std::string(buf);
+  }
+  return "node " + std::to_string(id) + at + ")";
 }
 
 void Mesh::check_consistency() const {

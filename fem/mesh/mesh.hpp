@@ -48,6 +48,9 @@ struct Mesh {
   std::string region_name(int id) const;
   /// Node ids of a facet set (sorted, unique).
   std::vector<Index> facet_set_nodes(const std::string& name) const;
+  /// Node ids of the set a boundary condition names: the node set of that name, else the
+  /// facet set's nodes (sorted, unique); empty if neither exists.
+  std::vector<Index> set_nodes(const std::string& name) const;
   /// "node 12 at (0.5, 1.25)" — how messages name a node.
   std::string describe_node(Index id) const;
   /// Throws bipot::Error if connectivity, offsets or sets reference missing nodes/cells.

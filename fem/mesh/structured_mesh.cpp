@@ -73,9 +73,22 @@ std::vector<double> lattice_coordinates(const AxisSegments& axis, int step) {
   return out;
 }
 
+using Pattern = std::vector<std::vector<std::array<int, 3>>>;
+
 /// Lattice offsets (in units of the lattice, cell origin at 0) of the nodes of every cell that
-/// one structured cell (square/cube of side `step`) is split into.
-std::vector<std::vector<std::array<int, 3>>> cell_patterns(CellType type) {
+/// one structured cell (square/cube of side `step`) is split into; triangles as `diagonals`
+/// says (Alternating: use Right and Left). All counter-clockwise / positively oriented.
+Pattern cell_patterns(CellType type, Diagonals diagonals = Diagonals::Right) {
+  if (type == CellType::Tri3 && diagonals == Diagonals::Left)
+    return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+  if (type == CellType::Tri3 && diagonals == Diagonals::Crossed) // lattice step 2, centre 1,1
+    return {{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}},
+            {{2, 0, 0}, {2, 2, 0}, {1, 1, 0}},
+            {{2, 2, 0}, {0, 2, 0}, {1, 1, 0}},
+            {{0, 2, 0}, {0, 0, 0}, {1, 1, 0}}};
+  if (type == CellType::Tri6 && diagonals == Diagonals::Left)
+    return {{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
+            {{2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {2, 1, 0}, {1, 2, 0}, {1, 1, 0}}};
   switch (type) {
   case CellType::Quad4:
     return {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
@@ -119,6 +132,20 @@ std::vector<std::vector<std::array<int, 3>>> cell_patterns(CellType type) {
 
 } // namespace
 
+const char* to_string(Diagonals diagonals) {
+  switch (diagonals) {
+  case Diagonals::Right:
+    return "right";
+  case Diagonals::Left:
+    return "left";
+  case Diagonals::Alternating:
+    return "alternating";
+  case Diagonals::Crossed:
+    return "crossed";
+  }
+  return "?";
+}
+
 std::vector<double> axis_coordinates(const AxisSegments& axis) {
   std::vector<double> x{axis.breaks.front()};
   for (std::size_t s = 0; s < axis.cells.size(); ++s) {
@@ -139,10 +166,20 @@ std::vector<double> axis_coordinates(const AxisSegments& axis) {
 Mesh make_block_mesh(const BlockMeshSpec& spec) {
   std::vector<std::string> problems;
   const CellType type = spec.cell;
-  const auto patterns = cell_patterns(type);
+  const Diagonals diagonals = spec.diagonals;
+  const auto patterns = cell_patterns(type, diagonals);
+  // Alternating: Right where i + j is even, Left where odd.
+  const auto odd_patterns =
+      cell_patterns(type, diagonals == Diagonals::Alternating ? Diagonals::Left : diagonals);
   if (patterns.empty())
     problems.push_back("block mesh: cell type " + to_string(type) +
                        " is not supported (tri3, tri6, quad4, quad8, tet4, hex8)");
+  const bool triangles = type == CellType::Tri3 || type == CellType::Tri6;
+  if (diagonals != Diagonals::Right && !triangles)
+    problems.push_back(std::string("block mesh: diagonals '") + to_string(diagonals) +
+                       "' applies to triangle cells (tri3, tri6), not to " + to_string(type));
+  else if (diagonals == Diagonals::Crossed && type != CellType::Tri3)
+    problems.push_back("block mesh: diagonals 'crossed' is available for tri3 cells only");
   const int dim = patterns.empty() ? 2 : cell_dim(type);
   bool axes_ok = check_axis("x", spec.x, problems);
   axes_ok = check_axis("y", spec.y, problems) && axes_ok;
@@ -162,7 +199,8 @@ Mesh make_block_mesh(const BlockMeshSpec& spec) {
   }
   if (!problems.empty()) throw InputError(problems);
 
-  const int step = cell_order(type); // lattice points per cell edge
+  // Lattice points per cell edge; Crossed uses the middle of the Tri3 lattice for its centre.
+  const int step = diagonals == Diagonals::Crossed ? 2 : cell_order(type);
   const std::vector<double> X = lattice_coordinates(spec.x, step);
   const std::vector<double> Y = lattice_coordinates(spec.y, step);
   const std::vector<double> Z = dim == 3 ? lattice_coordinates(spec.z, step) : std::vector{0.0};
@@ -187,7 +225,7 @@ Mesh make_block_mesh(const BlockMeshSpec& spec) {
       for (std::size_t i = 0; i < sx.size(); ++i) {
         const std::string& name = spec.block_regions[sx[i] + nbx * (sy[j] + nby * sz[k])];
         if (name.empty()) continue;
-        for (const auto& pattern : patterns) {
+        for (const auto& pattern : (i + j) % 2 == 0 ? patterns : odd_patterns) {
           for (const auto& o : pattern) {
             const Index p = (step * Index(i) + o[0]) +
                             NX * ((step * Index(j) + o[1]) + NY * (step * Index(k) + o[2]));

@@ -20,18 +20,32 @@ struct AxisSegments {
   std::vector<double> grading;
 };
 
+/// How each quad of the lattice is split into triangles (Tri3, Tri6).
+enum class Diagonals {
+  Right,       ///< 2 triangles, diagonal from the lower-left to the upper-right corner
+  Left,        ///< 2 triangles, diagonal from the lower-right to the upper-left corner
+  Alternating, ///< Right and Left in a checkerboard: Right where (i + j) is even
+  Crossed      ///< 4 triangles around a node at the quad's centre (Tri3 only)
+};
+
+/// "right", "left", "alternating", "crossed".
+const char* to_string(Diagonals diagonals);
+
 /// Specification of a blocked structured mesh.
 struct BlockMeshSpec {
   AxisSegments x, y, z;            ///< z is unused for 2D cell types
   CellType cell = CellType::Quad4; ///< Tri3, Tri6, Quad4, Quad8, Tet4 or Hex8
+  /// Triangle cells only (anything but Right is an error for other types); Crossed needs Tri3.
+  Diagonals diagonals = Diagonals::Right;
   /// One region name per block, x fastest, then y, then z; "" means no cells (a hole).
   std::vector<std::string> block_regions;
 };
 
-/// Builds the mesh. Quads are split into two triangles (Tri3/Tri6) along the diagonal from
-/// their lower-left to their upper-right corner; hexahedra into six tetrahedra around the
-/// diagonal from their (min,min,min) to their (max,max,max) corner, which is conforming.
-/// 2D cells are counter-clockwise, 3D cells positively oriented (Gmsh convention).
+/// Builds the mesh. Quads are split into triangles (Tri3/Tri6) as `diagonals` says (by
+/// default two, along the diagonal from their lower-left to their upper-right corner; Crossed
+/// adds a node at the centre of each quad, the middle of its two axis intervals); hexahedra into
+/// six tetrahedra around the diagonal from their (min,min,min) to their (max,max,max) corner, which
+/// is conforming. 2D cells are counter-clockwise, 3D cells positively oriented (Gmsh convention).
 /// Named facet sets AND node sets of the outer sides of the bounding box: "left" (x = min),
 /// "right" (x = max), "bottom" (y = min), "top" (y = max), and in 3D "back" (z = min),
 /// "front" (z = max); facets outward-oriented with `Facet::cell` set. Facets bounding holes

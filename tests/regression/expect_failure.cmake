@@ -1,6 +1,6 @@
 # Runs `bipot run|check INPUT` (or `bipot ARGS`, ARGS separated by '|'), expects exit code
 # EXPECT_CODE, the regex EXPECT in stderr, and (optionally) that EXPECT_FILE exists afterwards
-# (results already computed are kept).
+# (results already computed are kept) and that LOG_FILE holds the regex LOG_EXPECT.
 file(REMOVE_RECURSE results)
 if(DEFINED ARGS)
   string(REPLACE "|" ";" cmd "${ARGS}")
@@ -19,5 +19,14 @@ if(NOT err MATCHES "${EXPECT}")
 endif()
 if(EXPECT_FILE AND NOT EXISTS ${EXPECT_FILE})
   message(FATAL_ERROR "${EXPECT_FILE} is missing: converged results were lost")
+endif()
+if(LOG_FILE)
+  if(NOT EXISTS ${LOG_FILE})
+    message(FATAL_ERROR "${LOG_FILE} is missing")
+  endif()
+  file(READ ${LOG_FILE} log)
+  if(NOT log MATCHES "${LOG_EXPECT}")
+    message(FATAL_ERROR "${LOG_FILE} does not match '${LOG_EXPECT}':\n${log}")
+  endif()
 endif()
 message(STATUS "ok: ${err}")

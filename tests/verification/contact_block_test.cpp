@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace bipot {
@@ -357,6 +358,169 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint.pvd"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/interface_joint_0007_0.vtu"));
   barrier(); // every rank has read before the next test may clean up
+}
+
+// Cut-backs keep the plan: with at most 2 Newton iterations per attempt the shear stage
+// (press and shear only: opening takes 3) needs cut-backs, and the sub-increments that follow end
+// exactly on the next planned load level, so every planned level k/n of every stage has its result,
+// flagged as such.
+TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
+  const std::string press_shear =
+      press_shear_lift.substr(0, press_shear_lift.find("  - name: lift"));
+  const Model model = build_model(
+      read_problem_text(block_input(coulomb(0.3),
+                                    "contact_solver: {type: generalized_newton, max_iterations: 2, "
+                                    "tolerance: 1.0e-10}\n",
+                                    press_shear),
+                        "b.yaml"));
+  StaticAnalysis analysis(model);
+  std::map<int, std::vector<StepReport>> by_stage;
+  const RunSummary summary =
+      analysis.run([&](const StepReport& r) { by_stage[r.stage_index].push_back(r); });
+  EXPECT_GT(summary.cutbacks, 0); // the test must exercise a cut-back
+  EXPECT_GT(summary.sub_increments, 0);
+  int sub = 0;
+  for (const auto& [stage, reports] : by_stage) {
+    const int n = reports.front().steps;
+    int next = 1;
+    for (const StepReport& r : reports) {
+      if (r.planned_step == 0) {
+        ++sub;
+        EXPECT_GT(r.load_factor, static_cast<double>(next - 1) / n) << "stage " << stage;
+        EXPECT_LT(r.load_factor, static_cast<double>(next) / n) << "stage " << stage;
+        continue;
+      }
+      EXPECT_EQ(r.planned_step, next) << "stage " << stage;
+      EXPECT_EQ(r.load_factor, next == n ? 1.0 : static_cast<double>(next) / n);
+      EXPECT_EQ(r.stage_end, next == n);
+      ++next;
+    }
+    EXPECT_EQ(next, n + 1) << "stage " << stage << ": a planned level has no result";
+  }
+  EXPECT_EQ(sub, summary.sub_increments);
+}
+
+// A linear model without interfaces, loaded in 3 increments: the predictor solves increments
+// 2 and 3 exactly, and their residual must be judged against the model's forces (the last
+// reactions), not against its own round-off (which stalled them at 'relative residual 1').
+// The result equals the one-increment solve to round-off.
+TEST(ContactBlock, LinearModelInSeveralIncrementsEqualsOne) {
+  auto solve = [](int increments) {
+    const std::string stage = "  - name: press\n    increments: " + std::to_string(increments) +
+                              "\n    boundary_conditions:\n"
+                              "      - {set: bottom, component: x, value: 0}\n"
+                              "      - {set: bottom, component: y, value: 0}\n"
+                              "      - {set: top, component: y, value: -1.0e-3}\n";
+    const Model model = build_model(read_problem_text(block_input("", "", stage), "b.yaml"));
+    StaticAnalysis analysis(model);
+    analysis.run();
+    return analysis.displacement();
+  };
+  EXPECT_LT(test::relative_difference(solve(3), solve(1)), 1e-12);
+}
+
+// reactions.csv has a column only for the (set, component) pairs some stage constrains, and
+// each set sums the reactions of its own nodes: the corner node shared by `left` and `bottom`
+// counts in both.
+TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
+  const std::string stages = "  - name: press\n    increments: 1\n    boundary_conditions:\n"
+                             "      - {set: bottom, component: x, value: 0}\n"
+                             "      - {set: bottom, component: y, value: 0}\n"
+                             "      - {set: top, component: y, value: -1.0e-3}\n"
+                             "  - name: hold\n    increments: 1\n    boundary_conditions:\n"
+                             "      - {set: bottom, component: y, value: 0}\n"
+                             "      - {set: left, component: x, value: 0}\n"
+                             "      - {set: top, component: y, value: -1.0e-3}\n";
+  const std::string dir = "contact_block_reactions";
+  if (mpi_rank() == 0) std::filesystem::remove_all(dir);
+  barrier();
+  // No interface: one conforming body of two regions.
+  const std::string text = block_input("", "", stages) + "output: {directory: " + dir + "}\n";
+  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  std::vector<double> bottom, left, top;
+  {
+    ResultWriter writer(model, mpi_rank(), mpi_size());
+    StaticAnalysis analysis(model, {}, &writer);
+    analysis.run();
+    bottom = analysis.reaction("bottom");
+    left = analysis.reaction("left");
+    top = analysis.reaction("top");
+  }
+  barrier();
+  std::ifstream csv(dir + "/reactions.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent.
+  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy");
+  std::vector<double> last;
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    last.clear();
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');)
+      last.push_back(std::stod(cell));
+    ++rows;
+  }
+  ASSERT_EQ(rows, 2);
+  ASSERT_EQ(last.size(), 8u);
+  // The CSV keeps 17 digits: the values are the analysis's, exactly.
+  EXPECT_EQ(last[4], bottom[0]);
+  EXPECT_EQ(last[5], bottom[1]);
+  EXPECT_EQ(last[6], left[0]);
+  EXPECT_EQ(last[7], top[1]);
+  // Pressed: the top pushes down, the bottom holds it up, to the solver tolerance.
+  EXPECT_LT(last[7], 0.0);
+  EXPECT_NEAR(last[5] + last[7], 0.0, 1e-8 * std::abs(last[7]));
+  // In the hold stage only `left` holds x and nothing else acts along x, so its x reactions
+  // sum to zero. Its bottom corner is also a node of `bottom`, whose x column is that node's
+  // reaction alone (its other nodes are free in x): not zero, because the shared node counts
+  // in both sets.
+  EXPECT_NEAR(last[6], 0.0, 1e-8 * std::abs(last[7]));
+  EXPECT_GT(std::abs(last[4]), 1e-3 * std::abs(last[7]));
+  barrier(); // every rank has read before the next test may clean up
+}
+
+// The interface VTK series follows `output.vtk` and `output.every` like the solution series
+// (it used to write every step whatever they said); its CSV keeps every step.
+TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
+  namespace fs = std::filesystem;
+  for (const std::string output : {"{vtk: false}", "{every: 3}"}) {
+    const std::string dir = "contact_block_output_every";
+    if (mpi_rank() == 0) fs::remove_all(dir);
+    barrier();
+    const std::string text =
+        block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift) +
+        "output: {directory: " + dir + ", " + output.substr(1);
+    const Model model = build_model(read_problem_text(text, "block.yaml"));
+    {
+      ResultWriter writer(model, mpi_rank(), mpi_size());
+      StaticAnalysis analysis(model, {}, &writer);
+      analysis.run();
+    }
+    barrier();
+    int interface_steps = 0, solution_steps = 0, csv_rows = -1;
+    for (const auto& e : fs::directory_iterator(dir)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("interface_joint_", 0) == 0) ++interface_steps;
+      if (name.rfind("solution_", 0) == 0 && name.find("_0.vtu") != std::string::npos)
+        ++solution_steps;
+    }
+    std::ifstream csv(dir + "/interface_joint.csv");
+    for (std::string line; std::getline(csv, line);)
+      ++csv_rows;
+    EXPECT_EQ(csv_rows, 8) << output;
+    if (output == "{vtk: false}") {
+      EXPECT_EQ(interface_steps, 0);
+      EXPECT_FALSE(fs::exists(dir + "/interface_joint.pvd"));
+    } else {
+      // Steps 3 and 6 of the run, and the last of each of the three stages: 2, 6, 8.
+      EXPECT_EQ(solution_steps, 4);
+      EXPECT_EQ(interface_steps, solution_steps);
+    }
+    barrier();
+    if (mpi_rank() == 0) fs::remove_all(dir);
+  }
 }
 
 } // namespace

@@ -58,20 +58,35 @@ void distort(Mesh& mesh, double amount) {
 struct PatchCase {
   CellType cell;
   Kinematics kin;
+  Diagonals diagonals = Diagonals::Right; ///< triangle split of the quads (2D triangles)
 };
 
 std::string case_name(const testing::TestParamInfo<PatchCase>& info) {
-  return to_string(info.param.cell) + "_" + to_string(info.param.kin);
+  const std::string split = info.param.diagonals == Diagonals::Right
+                                ? ""
+                                : std::string("_") + to_string(info.param.diagonals);
+  return to_string(info.param.cell) + "_" + to_string(info.param.kin) + split;
+}
+
+/// The 2D patch: [1, 2] x [0, 1] in 4 x 4 quads (split into triangles as `diagonals` says).
+Mesh patch_2d(CellType cell, Diagonals diagonals) {
+  BlockMeshSpec spec;
+  spec.x = {{1.0, 2.0}, {4}, {}};
+  spec.y = {{0.0, 1.0}, {4}, {}};
+  spec.cell = cell;
+  spec.diagonals = diagonals;
+  spec.block_regions = {"body"};
+  return make_block_mesh(spec);
 }
 
 class PatchTest : public testing::TestWithParam<PatchCase> {};
 
 TEST_P(PatchTest, LinearFieldIsReproduced) {
-  const auto [cell, kin] = GetParam();
+  const auto [cell, kin, diagonals] = GetParam();
   const int dim = spatial_dim(kin);
   // Axisymmetric: r in [1, 2] keeps the patch off the axis.
-  Mesh mesh = dim == 2 ? make_rectangle(1.0, 2.0, 4, 0.0, 1.0, 4, cell)
-                       : make_box(0.0, 1.0, 3, 0.0, 1.0, 3, 0.0, 1.0, 3, cell);
+  Mesh mesh =
+      dim == 2 ? patch_2d(cell, diagonals) : make_box(0.0, 1.0, 3, 0.0, 1.0, 3, 0.0, 1.0, 3, cell);
   distort(mesh, dim == 2 ? 0.04 : 0.03);
 
   // Exact fields with constant strain. Axisymmetric: u_r = a r, u_z = d z + e is the
@@ -167,6 +182,17 @@ INSTANTIATE_TEST_SUITE_P(AllElements, PatchTest,
                                          PatchCase{CellType::Tet4, Kinematics::ThreeD},
                                          PatchCase{CellType::Hex8, Kinematics::ThreeD}),
                          case_name);
+
+// Every triangle split of the blocks generator passes it too.
+INSTANTIATE_TEST_SUITE_P(
+    TriangleDiagonals, PatchTest,
+    testing::Values(PatchCase{CellType::Tri3, Kinematics::PlaneStrain, Diagonals::Left},
+                    PatchCase{CellType::Tri3, Kinematics::PlaneStrain, Diagonals::Alternating},
+                    PatchCase{CellType::Tri3, Kinematics::PlaneStrain, Diagonals::Crossed},
+                    PatchCase{CellType::Tri3, Kinematics::Axisymmetric, Diagonals::Crossed},
+                    PatchCase{CellType::Tri6, Kinematics::PlaneStrain, Diagonals::Left},
+                    PatchCase{CellType::Tri6, Kinematics::Axisymmetric, Diagonals::Alternating}),
+    case_name);
 
 } // namespace
 } // namespace bipot

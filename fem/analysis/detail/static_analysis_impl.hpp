@@ -15,6 +15,7 @@
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 #include "fem/linalg/linear_solver.hpp"
+#include "fem/linalg/reused_lu_solver.hpp"
 #include "fem/linalg/schur_complement_solver.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
@@ -97,10 +98,16 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
+  /// Without it, an increment that the predictor already solves (a linear model under
+  /// proportional loading) measured its residual against its own round-off and never
+  /// converged.
+  double reaction_scale = 0;
   // generalized_newton: the bulk condensed onto the interface DOFs, refactorised only when
   // the bulk tangent or the constrained DOFs change.
   std::unique_ptr<contact::InterfaceNewtonSystem> newton_system;
   SchurComplementSolver schur;
+  ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
   bool schur_ready = false;
   std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
 
@@ -205,6 +212,15 @@ struct StaticAnalysis::Impl {
     double contact = 0;          ///< last relative multiplier change
     std::string failure;
   };
+
+  // R += F_step on the DOFs `constraints` leaves free (their rows are the equilibrium).
+  void add_step_loads(const Constraints& constraints) {
+    const Index first = dist.first_owned_dof();
+    double* r = R.owned_values();
+    const double* f = F_step.owned_values();
+    for (Index i = 0; i < dist.num_owned_dofs(); ++i)
+      if (!constraints.is_constrained(first + i)) r[i] += f[i];
+  }
 
   bool solve_increment_exact(double lambda, double dtau, IncrementLog& log);
   bool solve_increment(double lambda, double dtau, IncrementLog& log);

@@ -64,6 +64,7 @@ double block_mesh_cells(const MeshSpec& mesh, int dim) {
     cells += in_block;
   }
   const bool simplices = mesh.cell == "tri3" || mesh.cell == "tri6" || mesh.cell == "tet4";
+  if (mesh.diagonals == "crossed" && mesh.cell == "tri3") return cells * 4;
   return cells * (simplices ? (dim == 3 ? 6 : 2) : 1);
 }
 
@@ -113,7 +114,7 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
   }
   if (m.has("blocks")) {
     mesh.has_blocks = true;
-    std::vector<std::string> keys = {"cell", "x", "y", "regions"};
+    std::vector<std::string> keys = {"cell", "x", "y", "regions", "diagonals"};
     if (dim == 3) keys.insert(keys.begin() + 3, "z");
     YamlMap b(m.node("blocks"), "mesh.blocks", top.diag(), keys);
     if (!b.valid()) return mesh;
@@ -125,6 +126,20 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
     if (std::find(allowed.begin(), allowed.end(), mesh.cell) == allowed.end())
       b.error("cell", "cell type '" + mesh.cell + "' is not available in " + std::to_string(dim) +
                           "D; allowed: " + join_names(allowed));
+    if (b.has("diagonals")) {
+      b.string("diagonals", mesh.diagonals);
+      const std::vector<std::string> patterns = {"right", "left", "alternating", "crossed"};
+      const bool triangles = mesh.cell == "tri3" || mesh.cell == "tri6";
+      if (std::find(patterns.begin(), patterns.end(), mesh.diagonals) == patterns.end())
+        b.error("diagonals", "unknown diagonal pattern '" + mesh.diagonals +
+                                 "'; allowed: " + join_names(patterns));
+      else if (!triangles && std::find(allowed.begin(), allowed.end(), mesh.cell) != allowed.end())
+        b.error("diagonals",
+                "diagonals applies to triangle cells (tri3, tri6), not to " + mesh.cell);
+      else if (mesh.diagonals == "crossed" && mesh.cell != "tri3")
+        b.error("diagonals", "diagonals 'crossed' (4 triangles around a centre node) is "
+                             "available for tri3 cells only");
+    }
     for (const char* axis : {"x", "y", "z"}) {
       if (std::string(axis) == "z" && dim == 2) continue;
       AxisSegments& a = axis[0] == 'x' ? mesh.x : (axis[0] == 'y' ? mesh.y : mesh.z);

@@ -25,6 +25,20 @@ def read_curve(path):
             for r in rows]
 
 
+def check_profile_status(path):
+    """The status column names a pair bonded exactly while its adhesion is active (beta > 0),
+    and otherwise its contact branch (docs/pile_pullout.md)."""
+    errors = []
+    with open(path, newline="") as f:
+        for line, r in enumerate(csv.DictReader(f), start=2):
+            beta, status = float(r["beta"]), r["status"]
+            if status not in ("open", "stick", "slip", "bonded"):
+                errors.append(f"line {line}: unknown status '{status}'")
+            elif (beta > 0) != (status == "bonded"):
+                errors.append(f"line {line}: beta {beta} with status '{status}'")
+    return errors
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--app", required=True)
@@ -49,6 +63,9 @@ def main():
            for b in bad_values(os.path.join(results, f))]
     if bad:
         sys.exit("pile_regression: NaN or inf in the results:\n" + "\n".join(bad[:20]))
+    status_errors = check_profile_status(os.path.join(results, "profiles.csv"))
+    if status_errors:
+        sys.exit("pile_regression: profiles.csv status:\n" + "\n".join(status_errors[:20]))
     result = os.path.join(results, "head_force.csv")
     if a.update:
         shutil.copyfile(result, a.gold)

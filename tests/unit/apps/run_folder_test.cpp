@@ -103,6 +103,24 @@ TEST(RunFolder, FailedRunLeavesTheResultsAndKeepsItsStepsBeside) {
   EXPECT_EQ(fail_open_run_folder("again"), "");
 }
 
+TEST(RunFolder, FailureDetailsGoToFailureLog) {
+  ScratchDir dir("run_folder");
+  const std::string out = (dir.path / "results").string();
+  {
+    RunFolder run(out, two_stages(), "test");
+    run.converged(step(0, "rest", 1, 1.0, 1));
+  }
+  const std::string where =
+      fail_open_run_folder("no convergence; history (4 values): 1 ... 0.5", "1 1\n2 0.9\n3 0.7");
+  const fs::path log = fs::path(out + ".failed") / "failure.log";
+  EXPECT_EQ(read(log), "no convergence; history (4 values): 1 ... 0.5\n\n1 1\n2 0.9\n3 0.7\n");
+  EXPECT_NE(where.find(log.string()), std::string::npos) << where;
+  // Without details, no failure.log.
+  { RunFolder run(out, two_stages(), "test"); }
+  fail_open_run_folder("stopped");
+  EXPECT_FALSE(fs::exists(log));
+}
+
 TEST(RunFolder, FailureWithinAStageNamesItsNextStep) {
   ScratchDir dir("run_folder");
   const std::string out = (dir.path / "results").string();

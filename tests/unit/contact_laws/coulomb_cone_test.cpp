@@ -1,4 +1,4 @@
-// Coulomb-cone projection and bipotential predictor (formulation.md §4): closed forms on every
+// Coulomb-cone projection and bipotential predictor (docs/formulation.md §4): closed forms on every
 // branch, the variational characterisation of a projection, and Jacobians vs finite differences.
 #include "contact/laws/coulomb_cone.hpp"
 #include "local_test_utils.hpp"

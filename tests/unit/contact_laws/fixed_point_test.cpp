@@ -1,5 +1,5 @@
 // The fixed points of r ↦ Proj_{K_μ̄}(predictor(r)) are exactly the states satisfying the
-// contact law of formulation.md §3 (open, closed stick, closed slip), for any ρ > 0.
+// contact law of docs/formulation.md §3 (open, closed stick, closed slip), for any ρ > 0.
 #include "contact/laws/coulomb_cone.hpp"
 #include "contact/laws/coulomb_signorini.hpp"
 #include "contact/laws/interface_law.hpp"

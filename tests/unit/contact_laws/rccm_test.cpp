@@ -1,4 +1,4 @@
-// RCCM against the closed forms of formulation.md §3: monotonic opening and shear (traction,
+// RCCM against the closed forms of docs/formulation.md §3: monotonic opening and shear (traction,
 // peak, work of separation = w), irreversibility, viscous adhesion vs an independent RK4
 // integration, and the β0 = 0 reduction to Coulomb–Signorini.
 #include "contact/laws/coulomb_signorini.hpp"
@@ -47,7 +47,7 @@ Curve monotonic(const Rccm& law, const LocalVector& direction, double g_max, int
   return c;
 }
 
-/// Closed form for monotonic loading with stiffness C, from β0 = 1 (formulation.md §3).
+/// Closed form for monotonic loading with stiffness C, from β0 = 1 (docs/formulation.md §3).
 double closed_form(double g, double stiffness) {
   const double g_star = std::sqrt(kW / stiffness);
   return g <= g_star ? stiffness * g : kW * kW / (stiffness * g * g * g);

@@ -145,5 +145,34 @@ TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
   }
 }
 
+// A stuck pair whose four DOFs are all prescribed (a pile head pair pulled by both copies):
+// its multipliers act on nothing and the law leaves them free in stick, so their columns
+// would be zero. Each row then also fixes its own component: J is regular, and the rest of
+// the rows are those of the stick law.
+TEST(InterfaceNewtonSystem, StuckPairOnPrescribedDofsKeepsTheMatrixRegular) {
+  CoulombSignorini law(0.4);
+  const DofMap dofs(2, 2);
+  const DofDistribution dist(2, 2);
+  const Interface iface = one_pair();
+  InterfaceAssembler ia(iface, law, dofs, dist);
+  InterfaceNewtonSystem sys({&ia}, dofs);
+  sys.set_multipliers(0.7 * Eigen::Vector2d(10.0, 1.0));
+  ia.evaluate({0, 0, 0, 0}, 0.1);
+  ASSERT_EQ(ia.results()[0].status, ContactStatus::Stick);
+  const std::vector<bool> held(4, true);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(6);
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, 6);
+  J.topLeftCorner(4, 4).setIdentity(); // the prescribed rows, as the condensed S gives them
+  sys.add(held, F, &J);
+  EXPECT_LT((J.bottomRightCorner(2, 2) - Eigen::Matrix2d::Identity()).norm(), 1e-14);
+  EXPECT_EQ(Eigen::FullPivLU<Eigen::MatrixXd>(J).rank(), 6);
+  // With a free node b, the multipliers act on its rows: nothing is added.
+  std::vector<bool> b_free = {true, true, false, false};
+  J.setZero();
+  J.topLeftCorner(4, 4).setIdentity();
+  sys.add(b_free, F, &J);
+  EXPECT_LT(J.bottomRightCorner(2, 2).norm(), 1e-14);
+}
+
 } // namespace
 } // namespace bipot::contact

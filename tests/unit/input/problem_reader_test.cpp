@@ -56,6 +56,32 @@ TEST(ProblemReader, WrongTypeAndOutOfRange) {
   EXPECT_TRUE(has(r, "mesh.blocks.x.cells: cell counts must be at least 1"));
 }
 
+TEST(ProblemReader, BlockDiagonalsAreValidated) {
+  const std::string tri = replace(good, "cell: quad4", "cell: tri3");
+  for (const char* d : {"right", "left", "alternating", "crossed"}) {
+    const std::string text =
+        replace(tri, "    x:", std::string("    diagonals: ") + d + "\n    x:");
+    EXPECT_TRUE(problems_of(text).empty()) << d;
+    EXPECT_EQ(read_problem_text(text, "in.yaml").mesh.diagonals, d);
+  }
+  EXPECT_EQ(read_problem_text(tri, "in.yaml").mesh.diagonals, "right"); // default
+  // Crossed: 4 triangles per quad of the 2 x 2 grid.
+  EXPECT_EQ(build_model(read_problem_text(replace(tri, "    x:", "    diagonals: crossed\n    x:"),
+                                          "in.yaml"))
+                .mesh.num_cells(),
+            16);
+  EXPECT_TRUE(reports(tri, "    x:", "    diagonals: diagonal\n    x:",
+                      "in.yaml:5:16: mesh.blocks.diagonals: unknown diagonal pattern 'diagonal'; "
+                      "allowed: right, left, alternating, crossed"));
+  EXPECT_TRUE(reports(good, "    x:", "    diagonals: left\n    x:",
+                      "in.yaml:5:16: mesh.blocks.diagonals: diagonals applies to triangle cells "
+                      "(tri3, tri6), not to quad4"));
+  EXPECT_TRUE(reports(replace(good, "cell: quad4", "cell: tri6"),
+                      "    x:", "    diagonals: crossed\n    x:",
+                      "mesh.blocks.diagonals: diagonals 'crossed' (4 triangles around a centre "
+                      "node) is available for tri3 cells only"));
+}
+
 TEST(ProblemReader, MissingRequiredKey) {
   const auto p =
       problems_of(replace(good, "    loads:\n      - {type: pressure, set: top, value: 10}\n",
@@ -160,6 +186,15 @@ TEST(InterfaceInput, UnknownLawAndSolverListRegisteredNames) {
       "contact_solver: {type: uzawa}\n"));
   EXPECT_TRUE(has(q, "contact_solver.type: unknown contact solver 'uzawa'; registered: "
                      "bipotential_uzawa, generalized_newton, semismooth_newton"));
+}
+
+// A tolerance below what double precision can verify is refused with the reason, at check.
+TEST(InterfaceInput, ToleranceBelowRoundOffIsRefused) {
+  const auto p = problems_of(with_interface(
+      "interfaces:\n  - name: joint\n    between: [left, middle]\n    law: coulomb_signorini\n",
+      "contact_solver: {type: generalized_newton, tolerance: 1.0e-16}\n"));
+  EXPECT_TRUE(has(p, "contact_solver.tolerance: value 1e-16 is out of range [1e-14, 1): below "
+                     "1e-14 (about 50 machine epsilons) a relative residual is the round-off"));
 }
 
 TEST(InterfaceInput, RegionsThatDoNotTouch) {

@@ -157,6 +157,72 @@ TEST(BlockMesh, CellsArePositivelyOriented) {
   }
 }
 
+// Triangle diagonal patterns: counts, area, orientation, conformity, and where the diagonals
+// run (cell by cell on a 3 x 2 grid of unit squares).
+TEST(BlockMesh, TriangleDiagonalPatterns) {
+  const Diagonals all[] = {Diagonals::Right, Diagonals::Left, Diagonals::Alternating,
+                           Diagonals::Crossed};
+  for (CellType type : {CellType::Tri3, CellType::Tri6})
+    for (Diagonals d : all) {
+      if (d == Diagonals::Crossed && type == CellType::Tri6) continue;
+      const std::string what = to_string(type) + " " + to_string(d);
+      BlockMeshSpec s = holed_spec(type);
+      s.diagonals = d;
+      const Mesh m = make_block_mesh(s);
+      // holed_spec: 2D blocks of 2x3, 3x3, hole, 3x2 cells = 21 quads.
+      const Index quads = 21, per_quad = d == Diagonals::Crossed ? 4 : 2;
+      EXPECT_EQ(m.num_cells(), per_quad * quads) << what;
+      EXPECT_NEAR(total_measure(m), 7.0, 1e-12) << what; // as MeasureEqualsSumOfBlockMeasures
+      for (Index c = 0; c < m.num_cells(); ++c)
+        ASSERT_TRUE(test::positively_oriented(m, c)) << what << " cell " << c;
+      for (const auto& [key, count] : test::facet_census(m))
+        EXPECT_TRUE(count == 1 || count == 2) << what; // conforming
+      EXPECT_NO_THROW(m.check_consistency()) << what;
+    }
+
+  // Which diagonal each quad of a 3 x 2 unit grid holds: the edge shared by its two
+  // triangles, found as the pair of nodes both triangles of the quad use.
+  auto diagonal_of = [](const Mesh& m, Index quad) {
+    const Index* a = m.cell(2 * quad);
+    const Index* b = m.cell(2 * quad + 1);
+    std::vector<std::array<double, 3>> shared;
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q)
+        if (a[p] == b[q]) shared.push_back(m.nodes[a[p]]);
+    EXPECT_EQ(shared.size(), 2u);
+    // +1: lower-left to upper-right (slope > 0), −1: lower-right to upper-left.
+    return (shared[1][0] - shared[0][0]) * (shared[1][1] - shared[0][1]) > 0 ? 1 : -1;
+  };
+  BlockMeshSpec s;
+  s.x = {{0.0, 3.0}, {3}, {}};
+  s.y = {{0.0, 2.0}, {2}, {}};
+  s.cell = CellType::Tri3;
+  s.block_regions = {"a"};
+  for (Diagonals d : {Diagonals::Right, Diagonals::Left, Diagonals::Alternating}) {
+    s.diagonals = d;
+    const Mesh m = make_block_mesh(s);
+    EXPECT_EQ(m.num_nodes(), 12);
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const int expected = d == Diagonals::Right  ? 1
+                             : d == Diagonals::Left ? -1
+                                                    : ((i + j) % 2 == 0 ? 1 : -1);
+        EXPECT_EQ(diagonal_of(m, i + 3 * j), expected) << to_string(d) << " " << i << "," << j;
+      }
+  }
+  // Crossed: one more node per quad, at its centre, shared by its 4 triangles.
+  s.diagonals = Diagonals::Crossed;
+  const Mesh m = make_block_mesh(s);
+  EXPECT_EQ(m.num_nodes(), 12 + 6);
+  for (Index q = 0; q < 6; ++q) {
+    const Index centre = m.cell(4 * q)[2];
+    EXPECT_EQ(m.nodes[centre][0], 0.5 + q % 3) << q;
+    EXPECT_EQ(m.nodes[centre][1], 0.5 + q / 3) << q;
+    for (Index t = 1; t < 4; ++t)
+      EXPECT_EQ(m.cell(4 * q + t)[2], centre);
+  }
+}
+
 TEST(BlockMesh, QuadraticMidNodesAtEdgeMiddles) {
   for (CellType type : {CellType::Tri6, CellType::Quad8}) {
     const Mesh m = make_block_mesh(holed_spec(type));
@@ -271,6 +337,13 @@ TEST(BlockMesh, BadSpecsAreInputErrors) {
   s.cell = CellType::Line2;
   EXPECT_EQ(error_of(s), "block mesh: cell type line2 is not supported (tri3, tri6, quad4, "
                          "quad8, tet4, hex8)");
+  s = good;
+  s.diagonals = Diagonals::Left;
+  EXPECT_EQ(error_of(s),
+            "block mesh: diagonals 'left' applies to triangle cells (tri3, tri6), not to quad4");
+  s.cell = CellType::Tri6;
+  s.diagonals = Diagonals::Crossed;
+  EXPECT_EQ(error_of(s), "block mesh: diagonals 'crossed' is available for tri3 cells only");
   // Every problem is reported at once.
   s = good;
   s.x.cells = {-1};

@@ -1,0 +1,49 @@
+#include "apps/common/step_text.hpp"
+
+#include <cstdio>
+#include <vector>
+
+namespace bipot::app {
+
+namespace {
+
+std::string seconds_text(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f s", s);
+  return text;
+}
+
+std::string plural(int n, const std::string& one, const std::string& many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+} // namespace
+
+std::string step_flags(const StepReport& r) {
+  std::vector<std::string> parts;
+  // `cutbacks` is the halving level the step was solved at (it grows back one level per
+  // converged step); failures show as time in failed attempts.
+  if (r.cutbacks > 0) parts.push_back("1/" + std::to_string(1L << r.cutbacks) + " step");
+  if (r.planned_step == 0) parts.push_back("sub-increment");
+  if (r.staggered > 0)
+    parts.push_back("jump: staggered");
+  else if (r.unstable && r.cutbacks == 0)
+    parts.push_back("unstable");
+  if (r.failed_seconds > 0) parts.push_back(seconds_text(r.failed_seconds) + " in failed attempts");
+  if (parts.empty()) return "";
+  std::string out = "  (";
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    out += (i ? ", " : "") + parts[i];
+  return out + ")";
+}
+
+std::string stepping_summary(const RunSummary& s, const std::string& program) {
+  return program + ": stepping: " + plural(s.steps, "increment", "increments") + " (" +
+         std::to_string(s.steps - s.sub_increments) + " planned, " +
+         plural(s.sub_increments, "sub-increment", "sub-increments") + "), " +
+         plural(s.cutbacks, "cut-back", "cut-backs") + ", " +
+         plural(s.staggered_increments, "jump", "jumps") + "; " + seconds_text(s.failed_seconds) +
+         " in failed attempts";
+}
+
+} // namespace bipot::app

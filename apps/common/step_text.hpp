@@ -1,0 +1,20 @@
+#pragma once
+/// How the apps say what the load stepping did: the flags of a progress line and the closing
+/// summary, the same in every app.
+
+#include "fem/analysis/static_analysis.hpp"
+
+#include <string>
+
+namespace bipot::app {
+
+/// "" for a planned increment that converged at once; otherwise "  (" + what happened + ")",
+/// e.g. "  (1/4 step, sub-increment, 0.41 s in failed attempts)", "  (jump: staggered)",
+/// "  (unstable)".
+std::string step_flags(const StepReport& r);
+
+/// "<program>: stepping: 83 increments (80 planned, 3 sub-increments), 2 cut-backs, 1 jump;
+/// 0.52 s in failed attempts".
+std::string stepping_summary(const RunSummary& s, const std::string& program);
+
+} // namespace bipot::app

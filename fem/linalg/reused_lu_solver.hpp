@@ -1,0 +1,50 @@
+#pragma once
+/// Dense solves for a sequence of matrices that differ from one another in a few rows: the
+/// Newton matrices of generalized_newton, where only the pairs that changed status (stick,
+/// slip, open) or whose β moved change their rows between iterations and increments.
+
+#include <Eigen/Dense>
+
+namespace bipot {
+
+/// Solves J x = b by GMRES (Eigen's) preconditioned with the LU factors of an earlier J. If J
+/// differs from the factorised matrix by a matrix of rank k, GMRES converges in about k + 1
+/// iterations, each a matrix–vector product and a pair of triangular solves (O(n²)), against
+/// (2/3) n³ for a new factorisation: at n = 4800 one LU costs as much as several hundred
+/// iterations. Eigen's GMRES stops on the preconditioned residual, so the true residual is
+/// checked and, if above `accept` relative to ‖b‖, GMRES solves for it again (iterative
+/// refinement, up to three passes). J is factorised afresh when there are no factors yet or
+/// when that fails (GMRES not converged in `max_iterations`, or the residual not shrinking:
+/// the factors are too far off); the factors are then kept for the next solves.
+///
+/// A GMRES solution is an inexact Newton step with forcing term `accept` (Dembo, Eisenstat &
+/// Steihaug 1982): ‖J x − b‖ ≤ accept ‖b‖ keeps the convergence quadratic until the residual
+/// has dropped by that factor in one iteration.
+class ReusedLuSolver {
+public:
+  /// `tolerance`: GMRES' own (preconditioned) relative residual; `accept`: the largest true
+  /// relative residual ‖J x − b‖ / ‖b‖ taken from GMRES (fresh factors give the LU's own);
+  /// `max_iterations`: GMRES iterations (no restart) before a refactorisation.
+  explicit ReusedLuSolver(double tolerance = 1e-12, double accept = 1e-11, int max_iterations = 100)
+      : tolerance_(tolerance), accept_(accept), max_iterations_(max_iterations) {}
+
+  /// x with J x = b. Throws nothing: a singular J gives non-finite entries (check them).
+  Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b);
+  /// Drop the factors (the matrices to come are unrelated to the last one).
+  void reset() { factorized_ = false; }
+
+  int factorizations() const { return factorizations_; } ///< since construction
+  int iterations() const { return iterations_; }         ///< GMRES iterations, in total
+  int last_iterations() const { return last_iterations_; }
+
+private:
+  Eigen::VectorXd factorize_and_solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b);
+
+  double tolerance_, accept_;
+  int max_iterations_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  bool factorized_ = false;
+  int factorizations_ = 0, iterations_ = 0, last_iterations_ = 0;
+};
+
+} // namespace bipot
