@@ -57,6 +57,12 @@ struct StepReport {
   /// Cut back, or a snap-back: an interface resultant component lost over 20% of its largest
   /// value (and over 5% of the largest interface force of the model) in one step.
   bool unstable = false;
+  /// Traced by path-following (stage `control:` arc_length or dissipation): λ was an unknown
+  /// of the step and may have decreased (an unstable branch).
+  bool traced = false;
+  /// Energy the interfaces released in the increment (kJ; secant estimate of the dissipation
+  /// control, docs/theory.md); 0 outside path-following stages.
+  double dissipation = 0;
 };
 
 struct RunSummary {
@@ -67,6 +73,7 @@ struct RunSummary {
   int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
   int sub_increments = 0;       ///< converged increments that end between planned levels
+  int traced_increments = 0;    ///< increments traced by path-following
   double failed_seconds = 0;    ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time

@@ -80,6 +80,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
+  input::check_stage_controls(spec, diag);
   return spec;
 }
 
