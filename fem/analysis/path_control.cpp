@@ -10,7 +10,7 @@ namespace bipot {
 PathControl::PathControl(
     const StageSpec& stage, const contact::InterfaceNewtonSystem* sys,
     const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces)
-    : stage_(stage), sys_(sys),
+    : stage_(stage), sys_(sys), interfaces_(interfaces),
       max_increments_(stage.control.max_increments > 0 ? stage.control.max_increments
                                                        : 20 * stage.increments),
       planned_(1.0 / stage.increments), step_(std::make_unique<PathStep>()) {
@@ -18,12 +18,7 @@ PathControl::PathControl(
   if (!sys_)
     throw SolverError("stage '" + stage.name + "': control " + stage.control.type +
                       " needs contact_solver.type: generalized_newton and a contact interface");
-  for (const auto& ia : interfaces) {
-    if (ia->tied()) continue;
-    const std::vector<double> beta = ia->committed_adhesion();
-    for (std::size_t i = 0; i < ia->num_pairs(); ++i)
-      capacity_ += ia->interface().pairs[i].weight * ia->law().adhesion_energy(beta[i]);
-  }
+  capacity_ = adhesion_capacity();
   if (stage.control.type == "dissipation") {
     dissipation_step_ = stage.control.dissipation_step > 0 ? stage.control.dissipation_step
                                                            : capacity_ / stage.increments;
@@ -37,6 +32,17 @@ PathControl::PathControl(
 }
 
 PathControl::~PathControl() = default;
+
+double PathControl::adhesion_capacity() const {
+  double sum = 0;
+  for (const auto& ia : interfaces_) {
+    if (ia->tied()) continue;
+    const std::vector<double> beta = ia->committed_adhesion();
+    for (std::size_t i = 0; i < ia->num_pairs(); ++i)
+      sum += ia->interface().pairs[i].weight * ia->law().adhesion_energy(beta[i]);
+  }
+  return sum;
+}
 
 Eigen::VectorXd PathControl::on_interface(const std::vector<double>& u) const {
   Eigen::VectorXd v(sys_->num_dofs());
@@ -98,8 +104,10 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   } else if (mode_ == Mode::Dissipation) {
     dissipation_ = std::min(dissipation_step_, adapt * step_->dissipation);
     // The load factor moved by a planned increment or more for that energy: the interfaces
-    // no longer soften fast, the ramp can take over again.
-    if (dlambda >= planned_) mode_ = Mode::Ramp;
+    // no longer soften fast, the ramp can take over again. So too once adhesion can no longer
+    // release a step's energy: friction alone would let the step run backwards (the pile
+    // pushed back in dissipates as well), and past the snap-back the ramp is stable again.
+    if (dlambda >= planned_ || adhesion_capacity() < dissipation_step_) mode_ = Mode::Ramp;
   } else if (!finished_) {
     if (stage_.control.type == "arc_length" && x.size() > 0) {
       length0_ = stage_.control.arc_length > 0 ? stage_.control.arc_length : x.norm();

@@ -54,9 +54,12 @@ public:
 private:
   enum class Mode { Ramp, ArcLength, Dissipation };
   Eigen::VectorXd on_interface(const std::vector<double>& u) const;
+  /// Σ A w(β): what adhesion loss can still dissipate (kJ), at the committed β.
+  double adhesion_capacity() const;
 
   const StageSpec& stage_;
   const contact::InterfaceNewtonSystem* sys_;
+  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces_;
   Mode mode_ = Mode::Ramp;
   bool finished_ = false, traced_last_ = false;
   int max_increments_;

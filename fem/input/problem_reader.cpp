@@ -104,6 +104,12 @@ ProblemSpec read_problem_text(const std::string& text, const std::string& file_n
   return parse(text, file_name, "");
 }
 
+void check_stage_controls(const ProblemSpec& spec) {
+  Diagnostics diag(spec.file);
+  input::check_stage_controls(spec, diag);
+  if (!diag.problems().empty()) throw InputError(diag.problems());
+}
+
 std::string describe_input_format() {
   std::ostringstream os;
   os << "bipot input file (YAML), top-level keys:\n";
