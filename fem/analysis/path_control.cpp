@@ -51,19 +51,11 @@ Eigen::VectorXd PathControl::on_interface(const std::vector<double>& u) const {
   return v;
 }
 
-void PathControl::begin_increment(const std::vector<double>& u) {
-  if (!stage_.control.path_following()) return;
-  u0_ = on_interface(u);
-  f0_ = sys_->forces(); // the interfaces were last evaluated at the converged u
-}
-
 PathStep& PathControl::step(int level) {
   PathStep& ps = *step_;
   const double shrink = std::pow(0.5, level);
   ps.x_prev = x_prev_;
   ps.dlambda_prev = dlambda_prev_;
-  ps.u0 = u0_;
-  ps.f0 = f0_;
   if (mode_ == Mode::ArcLength) {
     ps.kind = PathStep::Kind::ArcLength;
     ps.length = shrink * length_;
@@ -73,9 +65,9 @@ PathStep& PathControl::step(int level) {
     ps.kind = PathStep::Kind::Dissipation;
     ps.dissipation = shrink * dissipation_;
     // Along the last increment, scaled to the energy asked for (within reason: the last
-    // increment may have been elastic, dissipating almost nothing).
+    // increment may have been elastic, dissipating nothing: then as far as it went).
     ps.predictor_scale =
-        dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 0.1;
+        dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 1.0;
   }
   return ps;
 }
@@ -93,7 +85,7 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   dissipation_last_ = 0;
   if (!stage_.control.path_following()) return;
   const Eigen::VectorXd x = on_interface(u) - on_interface(u_begin);
-  dissipation_last_ = 0.5 * ((sys_->forces() - f0_).dot(u0_) - f0_.dot(x));
+  dissipation_last_ = sys_->released_adhesion_energy(nullptr); // before the commit
   // The step that converged sets the next one's length: a traced step's own, or a shorter
   // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
   // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
@@ -113,9 +105,9 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
       length0_ = stage_.control.arc_length > 0 ? stage_.control.arc_length : x.norm();
       length_ = length0_;
       mode_ = Mode::ArcLength;
-    } else if (stage_.control.type == "dissipation" &&
-               dissipation_last_ > 0.1 * dissipation_step_) {
-      mode_ = Mode::Dissipation; // softening has started
+    } else if (stage_.control.type == "dissipation" && dissipation_last_ > dissipation_step_) {
+      // The ramp releases more than a traced step would: softening has set in.
+      mode_ = Mode::Dissipation;
     }
   }
   x_prev_ = x;

@@ -24,8 +24,6 @@ public:
               const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces);
   ~PathControl();
 
-  /// Records the state the increment starts from (u before any predictor).
-  void begin_increment(const std::vector<double>& u);
   /// The next increment is traced (λ an unknown) rather than ramped.
   bool following() const { return mode_ != Mode::Ramp; }
   /// The constraint of the next traced increment, its length halved `level` times.
@@ -70,7 +68,7 @@ private:
   double length0_ = 0, length_ = 0; ///< arc length, first and next
   double dissipation_last_ = 0;     ///< of the last converged increment
   double dlambda_prev_ = 0;
-  Eigen::VectorXd x_prev_, u0_, f0_; ///< on the interface DOFs
+  Eigen::VectorXd x_prev_; ///< the last increment on the interface DOFs
   std::unique_ptr<PathStep> step_;
 };
 

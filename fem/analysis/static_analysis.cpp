@@ -93,7 +93,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
-      path.begin_increment(u);
       if (path.following()) {
         // Path-following: Δλ is an unknown of the step; a failure halves the step.
         PathStep& ps = path.step(level);

@@ -60,8 +60,8 @@ struct StepReport {
   /// Traced by path-following (stage `control:` arc_length or dissipation): λ was an unknown
   /// of the step and may have decreased (an unstable branch).
   bool traced = false;
-  /// Energy the interfaces released in the increment (kJ; secant estimate of the dissipation
-  /// control, docs/theory.md); 0 outside path-following stages.
+  /// Energy adhesion loss released in the increment (kJ, what dissipation control measures);
+  /// 0 outside path-following stages.
   double dissipation = 0;
 };
 
