@@ -88,8 +88,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       // has its result (a sliver below 1e-9 of a planned increment is merged into it).
       const int next_k = std::min(stage.increments,
                                   static_cast<int>(std::floor(done * stage.increments + 1e-9)) + 1);
-      const double next_level =
+      const double planned_level =
           next_k == stage.increments ? 1.0 : static_cast<double>(next_k) / stage.increments;
+      // A level the stage asks results at (output_at) is a stop as well.
+      const auto asked =
+          std::upper_bound(stage.output_at.begin(), stage.output_at.end(), done + 1e-9 * planned);
+      const bool asked_first =
+          asked != stage.output_at.end() && *asked < planned_level - 1e-9 * planned;
+      const double next_level = asked_first ? *asked : planned_level;
       double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
@@ -234,10 +240,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.steps = stage.increments;
       rep.traced = path.traced_last();
       rep.dissipation = path.last_dissipation();
-      rep.planned_step = lambda == next_level && !rep.traced ? next_k : 0;
+      rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
+      rep.requested_output = !rep.traced && lambda == next_level &&
+                             (asked_first || std::binary_search(stage.output_at.begin(),
+                                                                stage.output_at.end(), next_level));
       rep.stage_end = lambda == 1.0;
       rep.global_step = ++summary.steps;
-      if (rep.planned_step == 0 && !rep.traced) ++summary.sub_increments;
+      if (rep.planned_step == 0 && !rep.traced && !rep.requested_output) ++summary.sub_increments;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
       rep.iterations = log.iterations;

@@ -153,10 +153,11 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries = list_entries(top, "stages",
-                                    {"name", "increments", "duration", "reset_displacements",
-                                     "boundary_conditions", "loads", "interface_gaps", "control"},
-                                    expected);
+  const auto entries =
+      list_entries(top, "stages",
+                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+                    "loads", "interface_gaps", "control", "output_at"},
+                   expected);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -174,6 +175,17 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
     if (m.has("control")) read_control(m, st);
+    if (m.reals("output_at", st.output_at) && m.has("output_at")) {
+      for (std::size_t k = 0; k < st.output_at.size(); ++k) {
+        const double f = st.output_at[k];
+        if (!(f > 0 && f <= 1))
+          m.error("output_at", "load factor " + std::to_string(f) +
+                                   " is out of range (0, 1] (fractions of the stage)");
+        else if (k > 0 && !(f > st.output_at[k - 1]))
+          m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
+                                   std::to_string(st.output_at[k - 1]) + ")");
+      }
+    }
     out.push_back(std::move(st));
   }
   return out;
