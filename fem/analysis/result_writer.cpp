@@ -16,6 +16,14 @@ std::vector<std::string> component_names(const Model& model) {
   if (model.kinematics == Kinematics::PlaneStrain) return {"x", "y"};
   return {"x", "y", "z"};
 }
+
+// How each step was reached, last in every CSV row: the same flags as the progress lines.
+const std::vector<std::string> flag_columns = {"cutbacks", "staggered", "unstable", "traced"};
+void add_flags(const StepReport& r, std::vector<double>& row) {
+  row.insert(row.end(), {static_cast<double>(r.cutbacks), static_cast<double>(r.staggered),
+                         r.unstable ? 1.0 : 0.0, r.traced ? 1.0 : 0.0});
+}
+
 } // namespace
 
 ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string directory)
@@ -68,6 +76,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
       for (const auto& c : component_names(model))
         cols.push_back("force_" + c);
+      cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
       interface_csv_.push_back(
           std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
     }
@@ -75,6 +84,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
     const auto names = component_names(model);
     for (const auto& [set, component] : reaction_columns_)
       columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
+    columns.insert(columns.end(), flag_columns.begin(), flag_columns.end());
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
   }
 }
@@ -96,6 +106,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     reactions.push_back(analysis.reaction(s));
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
+  add_flags(report, row);
   if (reactions_) reactions_->write_row(row);
   const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
                    report.requested_output;
@@ -123,6 +134,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
     const auto f = ia.resultant();
     for (int c = 0; c < dim; ++c)
       row.push_back(f[c]);
+    add_flags(report, row);
     interface_csv_[k]->write_row(row);
     if (!interface_vtk_[k] || !vtk_due) continue;
 

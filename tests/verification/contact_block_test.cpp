@@ -342,7 +342,7 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   ASSERT_TRUE(csv.good());
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "stage,step,time,load_factor,force_x,force_y");
+  EXPECT_EQ(line, "stage,step,time,load_factor,force_x,force_y,cutbacks,staggered,unstable,traced");
   std::vector<std::vector<double>> rows;
   while (std::getline(csv, line)) {
     std::vector<double> row;
@@ -495,8 +495,10 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
   ASSERT_TRUE(csv.good());
   std::string line;
   std::getline(csv, line);
-  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent.
-  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy");
+  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent;
+  // then the step's flags.
+  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy,cutbacks,"
+                  "staggered,unstable,traced");
   std::vector<double> last;
   int rows = 0;
   while (std::getline(csv, line)) {
@@ -507,7 +509,9 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
     ++rows;
   }
   ASSERT_EQ(rows, 2);
-  ASSERT_EQ(last.size(), 8u);
+  ASSERT_EQ(last.size(), 12u);
+  EXPECT_EQ(last[8], 0.0);  // converged without a cut-back
+  EXPECT_EQ(last[11], 0.0); // ramped, not traced
   // The CSV keeps 17 digits: the values are the analysis's, exactly.
   EXPECT_EQ(last[4], bottom[0]);
   EXPECT_EQ(last[5], bottom[1]);
