@@ -20,13 +20,13 @@ PathControl::PathControl(
                       " needs contact_solver.type: generalized_newton and a contact interface");
   capacity_ = adhesion_capacity();
   if (stage.control.type == "dissipation") {
+    if (!(capacity_ > 0))
+      throw SolverError("stage '" + stage.name +
+                        "': control dissipation follows the energy adhesion loss releases, and "
+                        "no interface has adhesion left to lose (no rccm interface with beta > "
+                        "0); use control: arc_length");
     dissipation_step_ = stage.control.dissipation_step > 0 ? stage.control.dissipation_step
                                                            : capacity_ / stage.increments;
-    if (!(dissipation_step_ > 0))
-      throw SolverError("stage '" + stage.name +
-                        "': control dissipation: no interface has adhesion left to lose, so the "
-                        "default dissipation_step (adhesion energy / increments) is 0; give "
-                        "control.dissipation_step or use control: arc_length");
     dissipation_ = dissipation_step_;
   }
 }
@@ -70,6 +70,10 @@ PathStep& PathControl::step(int level) {
         dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 1.0;
   }
   return ps;
+}
+
+bool PathControl::forward(const PathStep& step) const {
+  return step.kind != PathStep::Kind::ArcLength || step.x.dot(x_prev_) > 0;
 }
 
 bool PathControl::switch_on_failure() {

@@ -28,9 +28,15 @@ public:
   bool following() const { return mode_ != Mode::Ramp; }
   /// The constraint of the next traced increment, its length halved `level` times.
   PathStep& step(int level);
-  /// The pseudo-time step of a traced increment (the viscosity's Δτ): that of the last
-  /// increment's |Δλ|, since Δλ is only known at the end.
-  double pseudo_time_step() const { return std::abs(dlambda_prev_); }
+  /// The pseudo-time step of a traced increment (the viscosity's Δτ), as a fraction of the
+  /// stage's duration: a planned increment's. Δλ is only known at the end and may be tiny or
+  /// negative on a snap-back, where time still runs; with |Δλ_prev| the viscous β barely
+  /// moved in small steps and the pile's traced path broke down at 7.6 mm.
+  double pseudo_time_step() const { return planned_; }
+  /// A converged traced step goes on along the path: for arc length, its interface
+  /// displacement has a positive projection on the last step's (Crisfield's angle test: the
+  /// constraint ‖x‖ = L also holds going back); a dissipation step cannot go back.
+  bool forward(const PathStep& step) const;
   /// λ would pass 1: ramp to the end of the stage from here.
   void finish() { finished_ = true, mode_ = Mode::Ramp; }
   /// A ramp increment failed: true if dissipation control takes over (the stage asks for

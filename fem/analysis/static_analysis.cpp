@@ -105,6 +105,11 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         extrapolation = 0.0;
         const double dtau = path.pseudo_time_step() * stage.duration;
         bool converged = solve_increment_exact(done, dtau, log, &ps);
+        if (converged && !path.forward(ps)) {
+          converged = false;
+          log.failure = "the step turned back along the path (its interface displacement "
+                        "opposes the last step's)";
+        }
         if (converged) lambda = done + ps.dlambda;
         if (converged && lambda > 1.0 - 1e-9 * planned) {
           // The stage ends at λ = 1 exactly: back to the ramp for the last stretch.
