@@ -86,6 +86,12 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
     columns.insert(columns.end(), flag_columns.begin(), flag_columns.end());
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
+    energy_ = std::make_unique<CsvWriter>(
+        directory_ + "/energy.csv",
+        std::vector<std::string>{"stage", "step", "time", "load_factor", "external_work",
+                                 "interference_work", "bulk_energy", "interface_energy",
+                                 "adhesion_dissipation", "viscous_dissipation", "contact_work",
+                                 "balance_error", "relative_error"});
   }
 }
 
@@ -108,6 +114,16 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     row.push_back(reactions[set].at(component));
   add_flags(report, row);
   if (reactions_) reactions_->write_row(row);
+  if (energy_) {
+    const EnergyTotals& e = report.energy;
+    // Relative to the work put in so far (0 while none has been).
+    const double put_in = std::abs(e.external_work) + std::abs(e.interference_work);
+    energy_->write_row({static_cast<double>(report.stage_index + 1),
+                        static_cast<double>(report.step), report.time, report.load_factor,
+                        e.external_work, e.interference_work, e.bulk_energy, e.interface_energy,
+                        e.adhesion_dissipation, e.viscous_dissipation, e.contact_work,
+                        e.balance_error(), put_in > 0 ? e.balance_error() / put_in : 0.0});
+  }
   const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
                    report.requested_output;
   if (rank_ == 0) write_interfaces(report, analysis, due);

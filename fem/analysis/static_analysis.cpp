@@ -40,6 +40,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   const auto run_start = std::chrono::steady_clock::now();
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
+  energy = std::make_unique<EnergyLedger>(interfaces);
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = 0.0;
   // Interface resultants (per interface and component) of the last step and the largest
@@ -214,14 +215,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         }
       }
       path.end_increment(u, u_begin, lambda - done, log.iterations);
-      for (const auto& ia : interfaces)
-        ia->commit();
       auto t0 = std::chrono::steady_clock::now();
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
+      const std::vector<double> internal = reaction.gather_all();
       // Commit after that cell loop at the converged u: generalized_newton's last bulk
       // assembly was at the start of the increment (the rest followed by condensation).
       solid.commit();
@@ -235,6 +235,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       }
       reaction_all = reaction.gather_all();
       reaction_scale = reaction.norm2();
+      // External forces on the bodies: the loads and the supports' reactions. Recorded
+      // before the interfaces commit (the ledger reads β before and after the step).
+      std::vector<double> external = F_step.gather_all();
+      for (std::size_t d = 0; d < external.size(); ++d)
+        external[d] += reaction_all[d];
+      energy->record(u, external, internal);
+      for (const auto& ia : interfaces)
+        ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
       summary.assembly_seconds += seconds_since(t0);
 
@@ -245,6 +253,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.steps = stage.increments;
       rep.traced = path.traced_last();
       rep.dissipation = path.last_dissipation();
+      rep.energy = energy->totals();
       rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
       rep.requested_output = !rep.traced && lambda == next_level &&
                              (asked_first || std::binary_search(stage.output_at.begin(),
@@ -302,6 +311,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.absorb_stress_into_initial(u);
       for (const auto& ia : interfaces)
         ia->absorb_displacements();
+      energy->reset_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
   }

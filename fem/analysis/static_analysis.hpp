@@ -9,6 +9,7 @@
 /// debonding jump, and only then does the run stop.
 
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/core/error.hpp"
@@ -65,6 +66,8 @@ struct StepReport {
   /// Energy adhesion loss released in the increment (kJ, what dissipation control measures);
   /// 0 outside path-following stages.
   double dissipation = 0;
+  /// The run's energy balance up to this increment (energy.csv).
+  EnergyTotals energy;
 };
 
 struct RunSummary {

@@ -400,6 +400,26 @@ TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
   EXPECT_EQ(sub, summary.sub_increments);
 }
 
+// The energy balance (energy.csv) of pressing, shearing to full sliding and lifting a block
+// on a Coulomb joint: external work = bulk elastic energy + contact work at every step. Each
+// term is a trapezoidal rule, exact here (linear bulk, friction at constant force while it
+// slides, unilateral contact), so the balance holds to round-off; friction dissipates
+// (contact work > 0 once the block has slid).
+TEST(ContactBlock, EnergyBalancesAtEveryStep) {
+  const Model model = build_model(read_problem_text(
+      block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift), "b.yaml"));
+  StaticAnalysis analysis(model);
+  EnergyTotals last;
+  analysis.run([&](const StepReport& r) {
+    const EnergyTotals& e = r.energy;
+    EXPECT_LT(std::abs(e.balance_error()), 1e-10 * std::abs(e.external_work))
+        << "stage " << r.stage << " step " << r.step;
+    last = e;
+  });
+  EXPECT_GT(last.contact_work, 0.0); // the sliding dissipated
+  EXPECT_EQ(last.adhesion_dissipation, 0.0);
+}
+
 // `output_at` asks for results at load factors between the planned levels: the ramp stops
 // exactly on each (flagged requested_output, not counted as sub-increments), the planned levels
 // keep theirs, and the VTK series gets those steps although `output.every` skips the others.

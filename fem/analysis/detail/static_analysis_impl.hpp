@@ -133,6 +133,7 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  std::unique_ptr<EnergyLedger> energy; ///< created by run(), once the interfaces exist
   /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
   /// Without it, an increment that the predictor already solves (a linear model under
   /// proportional loading) measured its residual against its own round-off and never
