@@ -11,6 +11,12 @@
 
 namespace bipot {
 
+namespace {
+using Columns = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3>;
+using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+} // namespace
+
 double max_yield(const Vec3& stress, double kappa, const std::vector<PrincipalSurface>& surfaces) {
   double f = -std::numeric_limits<double>::infinity();
   for (const auto& s : surfaces)
@@ -33,8 +39,10 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
     const auto& set = candidate_sets[c];
     const int k = static_cast<int>(set.size());
     if (k == 0) continue;
-    Eigen::MatrixXd N(3, k), CM(3, k), M(k, k);
-    Eigen::VectorXd f(k), w(k), h(k);
+    // Fixed capacity (at most 3 active planes): no heap allocation at quadrature points.
+    Columns N(3, k), CM(3, k);
+    Small M(k, k);
+    SmallVector f(k), w(k), h(k);
     for (int a = 0; a < k; ++a) {
       const PrincipalSurface& s = surfaces[set[a]];
       N.col(a) = s.normal;
@@ -44,10 +52,10 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
       h(a) = s.hardening;
     }
     M = N.transpose() * CM + h * w.transpose();
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+    Eigen::FullPivLU<Small> lu(M);
     lu.setThreshold(1e-12);
     if (lu.rank() < k) continue;
-    const Eigen::VectorXd dl = lu.solve(f);
+    const SmallVector dl = lu.solve(f);
     if (dl.minCoeff() < -1e-12 * std::max(1.0, dl.cwiseAbs().maxCoeff())) continue;
     const Vec3 sigma = trial - CM * dl;
     // Implied by the yield check for planes like these, but it is the condition under which

@@ -36,7 +36,8 @@ struct PrincipalResult {
   double hardening_increment = 0.0;
 };
 
-/// Tries the candidate active sets (indices into `surfaces`) in order; `lambda`, `G` are the
+/// Tries the candidate active sets (indices into `surfaces`, at most 3 each) in order;
+/// `lambda`, `G` are the
 /// Lamé constants. Sets whose matrix M is singular are skipped (e.g. the apex without
 /// dilatancy, where no plastic flow can change the mean stress).
 PrincipalResult principal_return(const Vec3& trial, double kappa,

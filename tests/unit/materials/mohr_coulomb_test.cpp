@@ -97,6 +97,13 @@ TEST(MohrCoulomb, TensionCutoffCorner) {
   expect_return(m, t, s, MohrCoulomb::PlaneTension);
 }
 
+// Cut-off σt = 5 below the apex 10√3, trial (10, 9, 8): every cut-off plane active,
+// M = C, so Δλ = C⁻¹ (5, 4, 3) and σ = (5, 5, 5).
+TEST(MohrCoulomb, TensionCutoffApex) {
+  MohrCoulomb m(E, nu, c, phi, psi, 5.0);
+  expect_return(m, Vec3(10, 9, 8), Vec3::Constant(5.0), MohrCoulomb::TensionApex);
+}
+
 TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   MohrCoulomb m(E, nu, c, phi, psi), cut(E, nu, c, phi, psi, 5.0), corner(E, nu, c, phi, psi, 2.0);
   expect_fd_tangent(m, Vec3(-20, -50, -150), MohrCoulomb::Plane);
@@ -106,6 +113,7 @@ TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   expect_fd_tangent(cut, Vec3(8, 2, 1), MohrCoulomb::Tension);
   expect_fd_tangent(cut, Vec3(8, 7, 1), MohrCoulomb::TensionEdge);
   expect_fd_tangent(corner, Vec3(20, -20, -30), MohrCoulomb::PlaneTension);
+  expect_fd_tangent(cut, Vec3(10, 9, 8), MohrCoulomb::TensionApex);
   expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
 }
 
