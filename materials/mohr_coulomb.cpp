@@ -73,9 +73,10 @@ MohrCoulomb::MohrCoulomb(double youngs_modulus, double poissons_ratio, double co
   const double sphi = std::sin(friction_angle * degree), spsi = std::sin(dilatancy_angle * degree);
   const double k = 2 * cohesion * std::cos(friction_angle * degree);
   // Surfaces 0-2: main plane (σ1, σ3), then (σ2, σ3) and (σ1, σ2); 3-5: cut-off on σ1..σ3.
+  // No hardening: κ stays 0.
   std::vector<PrincipalSurface> surfaces;
   for (auto [a, b] : {std::pair{0, 2}, std::pair{1, 2}, std::pair{0, 1}})
-    surfaces.push_back({shear_plane(a, b, sphi), shear_plane(a, b, spsi), k, 0.0, 1.0});
+    surfaces.push_back({shear_plane(a, b, sphi), shear_plane(a, b, spsi), k, 0.0, 0.0});
   std::vector<std::vector<int>> sets = {{0}, {}, {0, 1}, {0, 2}, {}, {}, {0, 1, 2}};
   if (tension_cutoff) {
     for (int a = 0; a < 3; ++a)

@@ -98,7 +98,8 @@ ElastoPlastic::Return MultiSurfacePlastic::return_stress(const Mat3& trial, doub
     s = pr.stress;
     J = pr.jacobian;
     r.hardening_increment = pr.hardening_increment;
-  } else if (std::isfinite(apex_stress_)) {
+  } else if (std::isfinite(apex_stress_) &&
+             p.values.mean() >= apex_stress_ - 1e-10 * p.values.cwiseAbs().maxCoeff()) {
     r.branch = apex_branch_;
     s.setConstant(apex_stress_);
     J.setZero();

@@ -61,9 +61,10 @@ protected:
   using ElastoPlastic::ElastoPlastic;
   /// Sets the surfaces and candidate active sets. `apex_stress`, if finite, is the mean
   /// stress of a vertex every surface passes through, used when no candidate set is
-  /// admissible (a trial beyond the apex with no dilatancy: no flow can change the mean
-  /// stress, so the return is the vertex itself and the volumetric difference is plastic);
-  /// such a return reports branch code `apex_branch`, with a zero Jacobian.
+  /// admissible and the trial's mean stress is at or beyond it (no dilatancy: no flow can
+  /// change the mean stress, so the return is the vertex itself and the volumetric
+  /// difference is plastic); such a return reports branch code `apex_branch`, with a zero
+  /// Jacobian. Any other failure throws SolverError with the trial principal stresses.
   void set_surfaces(std::vector<PrincipalSurface> surfaces, std::vector<std::vector<int>> sets,
                     double apex_stress, int apex_branch);
 
