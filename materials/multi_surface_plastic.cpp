@@ -26,7 +26,7 @@ double max_yield(const Vec3& stress, double kappa, const std::vector<PrincipalSu
 
 PrincipalResult principal_return(const Vec3& trial, double kappa,
                                  const std::vector<PrincipalSurface>& surfaces,
-                                 const std::vector<std::vector<int>>& candidate_sets, double lambda,
+                                 const std::vector<ActiveSet>& candidate_sets, double lambda,
                                  double G) {
   const Mat3 C = lambda * Mat3::Ones() + 2 * G * Mat3::Identity();
   // Admissibility tolerances: round-off of the stresses involved.
@@ -36,7 +36,7 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
   const double tol = 1e-10 * scale;
   PrincipalResult out;
   for (std::size_t c = 0; c < candidate_sets.size(); ++c) {
-    const auto& set = candidate_sets[c];
+    const auto& set = candidate_sets[c].surfaces;
     const int k = static_cast<int>(set.size());
     if (k == 0) continue;
     // Fixed capacity (at most 3 active planes): no heap allocation at quadrature points.
@@ -73,7 +73,7 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
 }
 
 void MultiSurfacePlastic::set_surfaces(std::vector<PrincipalSurface> surfaces,
-                                       std::vector<std::vector<int>> sets, double apex_stress,
+                                       std::vector<ActiveSet> sets, double apex_stress,
                                        int apex_branch) {
   surfaces_ = std::move(surfaces);
   sets_ = std::move(sets);
@@ -94,7 +94,7 @@ ElastoPlastic::Return MultiSurfacePlastic::return_stress(const Mat3& trial, doub
   Vec3 s;
   Mat3 J;
   if (pr.set >= 0) {
-    r.branch = pr.set + 1;
+    r.branch = sets_[pr.set].branch;
     s = pr.stress;
     J = pr.jacobian;
     r.hardening_increment = pr.hardening_increment;

@@ -104,6 +104,15 @@ TEST(MohrCoulomb, TensionCutoffApex) {
   expect_return(m, Vec3(10, 9, 8), Vec3::Constant(5.0), MohrCoulomb::TensionApex);
 }
 
+// Cut-off σt = 3, trial (12.9, 12.9, −33): the return ends where four planes meet,
+// σ1 = σ2 = σt on the yield surface: 1.5·3 − 0.5 σ3 = k gives σ = (3, 3, 9 − 2k); the
+// flow is a non-negative combination of four vectors, found through a 3-plane subset.
+// Found by a randomized search over trial stresses, which failed before those subsets.
+TEST(MohrCoulomb, TensionCutoffEdgeOnTheYieldSurface) {
+  MohrCoulomb m(E, nu, c, phi, psi, 3.0);
+  expect_return(m, Vec3(12.9, 12.9, -33), Vec3(3, 3, 9 - 2 * k), MohrCoulomb::PlaneTensionEdge);
+}
+
 TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   MohrCoulomb m(E, nu, c, phi, psi), cut(E, nu, c, phi, psi, 5.0), corner(E, nu, c, phi, psi, 2.0);
   expect_fd_tangent(m, Vec3(-20, -50, -150), MohrCoulomb::Plane);
