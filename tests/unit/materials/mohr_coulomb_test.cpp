@@ -126,6 +126,22 @@ TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
 }
 
+// Exactly equal trial principal stresses (σxx = σyy, as in a triaxial test): the tangent's
+// rotation term uses its limit ∂s_a/∂λ_a − ∂s_a/∂λ_b there; central differences (whose
+// perturbations split the pair) must agree. Left edge (σ1 = σ2) and right edge (σ2 = σ3).
+TEST(MohrCoulomb, TangentAtEqualTrialPrincipalStresses) {
+  MohrCoulomb m(E, nu, c, phi, psi);
+  for (const Vec3& t : {Vec3(-20, -20, -150), Vec3(-20, -150, -150)}) {
+    Voigt sigma0(6), strain(6), s;
+    sigma0 << t(0), t(1), t(2), 0, 0, 0;
+    strain << 1e-5, 1e-5, 1e-5, 0, 0, 0; // keeps the pair equal
+    VoigtMatrix D;
+    m.update(strain, sigma0, nullptr, s, D, nullptr);
+    const VoigtMatrix fd = test::fd_tangent(m, strain, sigma0, nullptr, 1e-9);
+    EXPECT_LT(test::relative_difference(D, fd, m.elasticity_matrix(6)), 1e-6) << D << "\n\n" << fd;
+  }
+}
+
 // With a huge cohesion nothing yields: stress and tangent equal linear_elastic's.
 TEST(MohrCoulomb, HugeCohesionEqualsLinearElastic) {
   MohrCoulomb m(E, nu, 1e12, phi, psi);
