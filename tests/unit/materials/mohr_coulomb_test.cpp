@@ -113,6 +113,14 @@ TEST(MohrCoulomb, TensionCutoffEdgeOnTheYieldSurface) {
   expect_return(m, Vec3(12.9, 12.9, -33), Vec3(3, 3, 9 - 2 * k), MohrCoulomb::PlaneTensionEdge);
 }
 
+// Cut-off σt = 3, trial (40, −30, −31): σ1 = σt and σ2 = σ3 on the main plane,
+// 1.5·3 − 0.5 σ3 = k: σ = (3, 9 − 2k, 9 − 2k).
+TEST(MohrCoulomb, RightEdgeWithTensionCutoff) {
+  MohrCoulomb m(E, nu, c, phi, psi, 3.0);
+  expect_return(m, Vec3(40, -30, -31), Vec3(3, 9 - 2 * k, 9 - 2 * k),
+                MohrCoulomb::EdgeRightTension);
+}
+
 TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   MohrCoulomb m(E, nu, c, phi, psi), cut(E, nu, c, phi, psi, 5.0), corner(E, nu, c, phi, psi, 2.0);
   expect_fd_tangent(m, Vec3(-20, -50, -150), MohrCoulomb::Plane);
@@ -123,6 +131,9 @@ TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   expect_fd_tangent(cut, Vec3(8, 7, 1), MohrCoulomb::TensionEdge);
   expect_fd_tangent(corner, Vec3(20, -20, -30), MohrCoulomb::PlaneTension);
   expect_fd_tangent(cut, Vec3(10, 9, 8), MohrCoulomb::TensionApex);
+  const MohrCoulomb cut3(E, nu, c, phi, psi, 3.0);
+  expect_fd_tangent(cut3, Vec3(12.9, 12.5, -33), MohrCoulomb::PlaneTensionEdge);
+  expect_fd_tangent(cut3, Vec3(40, -30, -31), MohrCoulomb::EdgeRightTension);
   expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
 }
 
