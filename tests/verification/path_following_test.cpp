@@ -91,8 +91,9 @@ TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
     StaticAnalysis analysis(model);
     EnergyTotals last;
     analysis.run([&](const StepReport& r) {
-      if (r.energy.adhesion_dissipation == 0.0)
+      if (r.energy.adhesion_dissipation == 0.0) {
         EXPECT_LT(std::abs(r.energy.balance_error()), 1e-12 * r.energy.external_work);
+      }
       last = r.energy;
     });
     // All the adhesion energy w A = 0.1 kJ goes but the little left in β = w/(C g²).
