@@ -15,13 +15,15 @@ Model checked_model(const ProblemSpec& spec) {
   // the other.
   std::vector<std::pair<Index, Index>> joined;
   std::vector<OpeningInterface> opening;
+  std::vector<Index> held; // by perfectly bonded obstacles
   for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
     const contact::Interface& iface = model.interfaces[k];
     OpeningInterface o;
     o.name = iface.name;
     o.smallest_gap = iface.pairs.empty() ? 0.0 : iface.pairs.front().gap;
     for (const auto& pair : iface.pairs) {
-      joined.emplace_back(pair.node_a, pair.node_b);
+      if (iface.obstacle && model.interface_laws[k]->is_tied()) held.push_back(pair.node_a);
+      if (pair.node_b != contact::rigid_obstacle) joined.emplace_back(pair.node_a, pair.node_b);
       o.pairs.emplace_back(pair.node_a, pair.node_b);
       o.smallest_gap = std::min(o.smallest_gap, pair.gap);
     }
@@ -35,7 +37,7 @@ Model checked_model(const ProblemSpec& spec) {
   problems.insert(problems.end(), mesh.begin(), mesh.end());
   // Rigid motions of a mesh with NaN nodes or inverted cells would only add noise.
   if (mesh.empty()) {
-    const auto free = free_rigid_body_modes(model.spec, model.mesh, opening);
+    const auto free = free_rigid_body_modes(model.spec, model.mesh, opening, held);
     problems.insert(problems.end(), free.begin(), free.end());
   }
   if (!problems.empty()) throw InputError(problems);

@@ -9,6 +9,8 @@
 /// the implicit β update). Every rank evaluates every pair (interfaces are small next to the
 /// bulk) so all ranks hold the whole interface state; each rank assembles the pairs whose
 /// node a it owns.
+/// Against a rigid obstacle (node_b = rigid_obstacle) u_b is the obstacle's displacement,
+/// data set per increment (set_obstacle_displacement()); only node a's block is assembled.
 
 #include "contact/interface/interface_mesh.hpp"
 #include "contact/laws/frozen_adhesion.hpp"
@@ -115,6 +117,10 @@ public:
   /// expansion of a pile shaft at installation. Kept through displacement resets.
   void set_gap_shift(double shift) { gap_shift_ = shift; }
   double gap_shift() const { return gap_shift_; }
+  /// Obstacle interfaces: the rigid translation (m, global components, 0 beyond dim) of the
+  /// obstacle, i.e. u_b of every pair. Zeroed by absorb_displacements() (its jumps are kept).
+  void set_obstacle_displacement(const std::array<double, 3>& u) { obstacle_u_ = u; }
+  const std::array<double, 3>& obstacle_displacement() const { return obstacle_u_; }
 
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }
@@ -137,6 +143,8 @@ public:
 
 private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
+  /// Component c of body 2's displacement at pair p: node b's, or the obstacle's.
+  double u_b(const InterfacePair& p, int c, const std::vector<double>& u) const;
 
   const Interface& iface_;
   const InterfaceLaw& law_;
@@ -155,6 +163,7 @@ private:
   double multiplier_change_ = 0;
   double roundoff_force_ = 0;
   double gap_shift_ = 0;
+  std::array<double, 3> obstacle_u_{0, 0, 0};
   FrozenAdhesion frozen_law_;
   bool frozen_ = false;
   std::vector<double> frozen_beta_;

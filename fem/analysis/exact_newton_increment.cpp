@@ -27,6 +27,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);
   }
+  move_obstacles(lambda);
   std::vector<Index> constrained_dofs;
   for (const auto& kv : target)
     constrained_dofs.push_back(kv.first);

@@ -35,6 +35,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);
   }
+  move_obstacles(lambda);
 
   Constraints constraints;
   double reference = 0.0, baseline = -1.0;

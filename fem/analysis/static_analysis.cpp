@@ -12,7 +12,7 @@ using namespace analysis_detail;
 void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
     const auto& spec = model.spec.interfaces[k];
-    if (!interfaces[k]->tied() || spec.between.size() != 2) continue;
+    if (!interfaces[k]->tied() || spec.between.size() != 2) continue; // obstacles: below
     const int region = model.mesh.regions.at(spec.between[0]);
     DistributedVector& f = du; // scratch: du is not needed between increments
     f.set_zero();
@@ -54,6 +54,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     for (const auto& bc : stage.boundary_conditions)
       for (Index node : set_nodes(bc.set))
         target[dofs.dof(node, bc.component)] = bc.value;
+    begin_obstacle_stage(stage);
     start.clear();
     for (const auto& [d, v] : target)
       start[d] = u[d];
@@ -185,6 +186,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       reaction_all = reaction.gather_all();
       reaction_scale = reaction.norm2();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
+      tied_obstacle_forces();
       summary.assembly_seconds += seconds_since(t0);
 
       StepReport rep;

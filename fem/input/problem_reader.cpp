@@ -69,7 +69,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   }
 
   if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
-  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top);
+  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top, spec.kinematics);
   if (top.has("contact_solver"))
     spec.contact_solver = input::read_contact_solver(top);
   else

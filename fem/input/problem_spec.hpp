@@ -76,6 +76,15 @@ struct InterfaceGapSpec {
   std::string where;
 };
 
+/// The displacement of an interface's rigid obstacle reached at the end of a stage (ramped
+/// like a boundary condition from its value at the end of the previous stage; an obstacle a
+/// stage does not name keeps its displacement).
+struct ObstacleDisplacementSpec {
+  std::string interface;
+  std::vector<double> value; ///< m, one per spatial component
+  std::string where;
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -86,11 +95,24 @@ struct StageSpec {
   std::vector<DirichletSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
   std::vector<InterfaceGapSpec> interface_gaps;
+  std::vector<ObstacleDisplacementSpec> obstacle_displacements;
   std::string where;
 };
 
 /// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
 /// mesh, or `facet_sets: [a, b]` with coincident nodes or nodes facing each other.
+/// A rigid analytical surface as an interface's body 2 (validated: a known type, the
+/// vectors of the kinematics' size, a non-zero normal or axis, normalised, a radius > 0).
+struct ObstacleSpec {
+  std::string type; ///< "plane" (or "line"), "circle", "sphere", "cylinder"
+  std::vector<double>
+      point; ///< plane: a point on it; circle, sphere: centre; cylinder: on the axis
+  std::vector<double> normal; ///< plane: unit normal pointing out of the obstacle
+  std::vector<double> axis;   ///< cylinder: unit axis
+  double radius = 0;          ///< m
+  std::string where;
+};
+
 struct InterfaceSpec {
   std::string name;
   std::vector<std::string> between;    ///< two region names, or empty
@@ -101,6 +123,8 @@ struct InterfaceSpec {
   /// facet_sets only: "coincident" (same positions) or "normal" (node of b on the normal line
   /// of the node of a; their distance is the pair's initial gap)
   std::string pairing = "coincident";
+  /// `facet_sets: [a]` with an obstacle: body 2 is this rigid surface.
+  std::optional<ObstacleSpec> obstacle;
   std::string where;
 };
 

@@ -278,10 +278,14 @@ std::vector<bool> pressed_bodies(const ProblemSpec& spec, std::size_t s, const M
     for (std::size_t k = 0; k <= s; ++k)
       for (const auto& gap : spec.stages[k].interface_gaps)
         if (gap.interface == iface.name) shift = gap.value;
-    if (iface.smallest_gap + shift < 0)
+    bool moved = false; // an obstacle moved so far may push the body
+    for (std::size_t k = 0; k <= s; ++k)
+      for (const auto& d : spec.stages[k].obstacle_displacements)
+        moved = moved || d.interface == iface.name;
+    if (iface.smallest_gap + shift < 0 || moved)
       for (const auto& [a, b] : iface.pairs)
         for (Index n : {a, b})
-          if (bodies.of_node[n] >= 0) pressed[bodies.of_node[n]] = true;
+          if (n >= 0 && bodies.of_node[n] >= 0) pressed[bodies.of_node[n]] = true;
   }
   return pressed;
 }
@@ -289,7 +293,8 @@ std::vector<bool> pressed_bodies(const ProblemSpec& spec, std::size_t s, const M
 } // namespace
 
 std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Mesh& mesh,
-                                               const std::vector<OpeningInterface>& interfaces) {
+                                               const std::vector<OpeningInterface>& interfaces,
+                                               const std::vector<Index>& held_nodes) {
   const Bodies bodies(mesh);
   const std::size_t num_bodies = bodies.cells.size();
   const int num_components = spec.kinematics == "three_d" ? 3 : 2;
@@ -300,10 +305,12 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
   std::vector<std::vector<std::string>> held_by(num_bodies);
   for (const auto& iface : interfaces) {
     std::set<int> touched;
-    for (const auto& [a, b] : iface.pairs)
-      if (bodies.of_node[a] >= 0 && bodies.of_node[b] >= 0 &&
+    for (const auto& [a, b] : iface.pairs) {
+      if (b < 0 && bodies.of_node[a] >= 0) touched.insert(bodies.of_node[a]); // an obstacle
+      if (b >= 0 && bodies.of_node[a] >= 0 && bodies.of_node[b] >= 0 &&
           bodies.of_node[a] != bodies.of_node[b])
         touched.insert({bodies.of_node[a], bodies.of_node[b]});
+    }
     for (int b : touched)
       held_by[b].push_back(iface.name);
   }
@@ -321,6 +328,10 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
         if (bodies.of_node[node] >= 0 && seen.insert(3 * node + bc.component).second)
           fixed[bodies.of_node[node]].emplace_back(node, bc.component);
     }
+    for (Index node : held_nodes)
+      for (int c = 0; c < num_components; ++c)
+        if (bodies.of_node[node] >= 0 && seen.insert(3 * node + c).second)
+          fixed[bodies.of_node[node]].emplace_back(node, c);
     std::vector<bool> pressed;
     for (std::size_t b = 0; b < num_bodies; ++b) {
       const RigidModes& m = modes[b];

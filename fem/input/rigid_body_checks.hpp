@@ -17,7 +17,8 @@ namespace bipot {
 /// bodies it joins may come apart, so it does not hold one body to another.
 struct OpeningInterface {
   std::string name;
-  std::vector<std::pair<Index, Index>> pairs; ///< (node of body 1, node of body 2)
+  /// (node of body 1, node of body 2); the second is -1 against a rigid obstacle.
+  std::vector<std::pair<Index, Index>> pairs;
   /// m: the smallest initial normal opening of its pairs, initial_gap included; < 0 when the
   /// bodies start overlapping (pressed together).
   double smallest_gap = 0;
@@ -40,7 +41,11 @@ struct OpeningInterface {
 /// One problem per stage and body, "<stage where>: stage '<name>': the body of region(s) ...
 /// (cells ...): free <motions>; ..."; at most 10, then a line with the number of the others.
 /// Conditions on sets the mesh lacks are skipped (reported elsewhere).
+/// A rigid obstacle holds a body like another body would; one that a stage (or an earlier
+/// one) moves may press it. `held_nodes` are fixed in every component in every stage (the
+/// nodes a perfectly bonded obstacle holds).
 std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Mesh& mesh,
-                                               const std::vector<OpeningInterface>& interfaces);
+                                               const std::vector<OpeningInterface>& interfaces,
+                                               const std::vector<Index>& held_nodes = {});
 
 } // namespace bipot

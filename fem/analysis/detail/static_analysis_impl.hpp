@@ -115,6 +115,16 @@ struct StaticAnalysis::Impl {
   std::map<Index, double> target, start;
   // Interface gap shifts (per interface) at the start and the end of the current stage.
   std::vector<double> gap_start, gap_target;
+  // Obstacle translations (per interface) at the start and the end of the current stage.
+  std::vector<std::array<double, 3>> obstacle_start, obstacle_target;
+  /// Reads the stage's obstacle displacements; holds the nodes of tied obstacle interfaces to
+  /// their obstacle (entries of `target`). Before `start` is filled (obstacle_motion.cpp).
+  void begin_obstacle_stage(const StageSpec& stage);
+  /// Sets every obstacle's translation at load factor `lambda` of the stage.
+  void move_obstacles(double lambda);
+  /// Tied obstacle interfaces, for output: the force on the obstacle is minus the reactions
+  /// of the nodes it holds.
+  void tied_obstacle_forces();
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),

@@ -16,7 +16,12 @@ const std::vector<std::string>& component_names(const std::string& kinematics);
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics);
 OutputSpec read_output(const YamlMap& top);
-std::vector<InterfaceSpec> read_interfaces(const YamlMap& top);
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics);
+/// An interface with `obstacle` (obstacle_section.cpp): the obstacle, and the one facet set
+/// of the body it needs (no `between`, no `pairing`).
+void read_obstacle_interface(const YamlMap& m, const std::string& kinematics, InterfaceSpec& spec);
+/// A stage's `obstacle_displacements` (obstacle_section.cpp).
+void read_obstacle_displacements(const YamlMap& stage, int dim, StageSpec& st);
 ContactSolverSpec read_contact_solver(const YamlMap& top);
 
 /// Reads the map at `parent[key]` as parameters of `schema` (keys in `skip` are left to the

@@ -114,10 +114,11 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries = list_entries(top, "stages",
-                                    {"name", "increments", "duration", "reset_displacements",
-                                     "boundary_conditions", "loads", "interface_gaps"},
-                                    expected);
+  const auto entries =
+      list_entries(top, "stages",
+                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+                    "loads", "interface_gaps", "obstacle_displacements"},
+                   expected);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -134,6 +135,8 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    if (m.has("obstacle_displacements"))
+      read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
     out.push_back(std::move(st));
   }
   return out;
