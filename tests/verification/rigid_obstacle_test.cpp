@@ -9,7 +9,8 @@
 //   rccm_pull_test with a rigid base;
 // - perfect bonding to a moving plane equals prescribing the same displacement, and the force
 //   on the obstacle balances the reaction at the other end;
-// - Hertz: a rigid cylinder (circle) pressed into an elastic half-plane.
+// - Hertz: a rigid cylinder (circle) pressed into an elastic half-plane;
+// - 3D: a block sliding on a plane, a sphere and a cylinder pressed into a block.
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -325,6 +326,103 @@ TEST(RigidCircle, HertzHalfWidthAndPeakPressure) {
   EXPECT_NEAR(p[last].first, a, h);
   EXPECT_NEAR(p[0].second, p0, 0.03 * p0);
 }
+
+// 3D (the generator's z faces are back and front): a hex block pressed on a rigid plane
+// and sheared along (0.6, 0.8) slides on the Coulomb cone at every pair, along the shear.
+TEST(RigidObstacle3d, BlockSlidesOnAPlaneOnTheCone) {
+  const std::string text =
+      "kinematics: three_d\n"
+      "mesh:\n  blocks:\n    cell: hex8\n"
+      "    x: {breaks: [0, 1.0], cells: [2]}\n"
+      "    y: {breaks: [0, 1.0], cells: [2]}\n"
+      "    z: {breaks: [0, 0.5], cells: [2]}\n"
+      "    regions: [block]\n"
+      "materials:\n"
+      "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+      "linear_solver: {method: direct}\n"
+      "interfaces:\n  - name: floor\n    facet_sets: [back]\n"
+      "    obstacle: {type: plane, point: [0, 0, 0], normal: [0, 0, 2]}\n"
+      "    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}\n"
+      "contact_solver: {type: generalized_newton, tolerance: 1.0e-11}\n"
+      "stages:\n"
+      "  - name: press\n    boundary_conditions:\n"
+      "      - {set: front, component: x, value: 0}\n"
+      "      - {set: front, component: y, value: 0}\n"
+      "      - {set: front, component: z, value: -1.0e-3}\n"
+      "  - name: shear\n    increments: 2\n    boundary_conditions:\n"
+      "      - {set: front, component: x, value: 3.0e-3}\n"
+      "      - {set: front, component: y, value: 4.0e-3}\n"
+      "      - {set: front, component: z, value: -1.0e-3}\n";
+  const Model model = build_model(read_problem_text(text, "block3d.yaml"));
+  StaticAnalysis analysis(model);
+  analysis.run();
+  const auto& ia = *analysis.interfaces()[0];
+  // Every pair slips and sits on the cone, |r_t| = mu r_n (solver tolerance 1e-11); the
+  // slip directions differ a little from node to node (Poisson), so the resultant's
+  // tangential part is a little under mu N, along the shear.
+  for (const auto& p : ia.results()) {
+    ASSERT_EQ(p.status, contact::ContactStatus::Slip);
+    EXPECT_NEAR(p.r.tail(2).norm(), mu * p.r(0), 1e-9 * mu * p.r(0));
+  }
+  const auto f = ia.resultant();
+  EXPECT_LT(f[2], 0.0);
+  const double tangential = std::hypot(f[0], f[1]);
+  EXPECT_NEAR(tangential, -mu * f[2], 1e-3 * std::abs(f[2]));
+  EXPECT_NEAR(f[0] / tangential, 0.6, 1e-4); // dragged along the shear
+  const auto front = analysis.reaction("front");
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(front[c], f[c], 1e-9 * std::abs(f[2]));
+}
+
+// A rigid sphere and a rigid cylinder pressed 1 mm into a block's front (z = max), every solver:
+// the block carries the force to its support (equilibrium) and the solvers agree (1e-8).
+class RoundObstacle3d : public testing::TestWithParam<std::string> {};
+
+TEST_P(RoundObstacle3d, EquilibriumAndSolversAgree) {
+  const auto text = [&](const std::string& type) {
+    return "kinematics: three_d\n"
+           "mesh:\n  blocks:\n    cell: hex8\n"
+           "    x: {breaks: [0, 1.0], cells: [4]}\n"
+           "    y: {breaks: [0, 1.0], cells: [4]}\n"
+           "    z: {breaks: [0, 0.5], cells: [2]}\n"
+           "    regions: [block]\n"
+           "materials:\n"
+           "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+           "linear_solver: {method: direct}\n"
+           "interfaces:\n  - name: indenter\n    facet_sets: [front]\n    obstacle: " +
+           GetParam() +
+           "\n    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.2}\n"
+           "contact_solver: {type: " +
+           type +
+           ", tolerance: 1.0e-11}\n"
+           "stages:\n"
+           "  - name: press\n    increments: 2\n    boundary_conditions:\n"
+           "      - {set: back, component: x, value: 0}\n"
+           "      - {set: back, component: y, value: 0}\n"
+           "      - {set: back, component: z, value: 0}\n"
+           "    obstacle_displacements:\n"
+           "      - {interface: indenter, value: [0, 0, -2.0e-3]}\n";
+  };
+  const auto outcome = [&](const std::string& type) {
+    const Model model = build_model(read_problem_text(text(type), "indenter.yaml"));
+    StaticAnalysis analysis(model);
+    analysis.run();
+    std::array<double, 3> f = analysis.interfaces()[0]->resultant();
+    const auto bottom = analysis.reaction("back");
+    for (int c = 0; c < 3; ++c) // the block pushes the indenter as its support pushes it
+      EXPECT_NEAR(f[c], bottom[c], 1e-9 * std::abs(f[2])) << type << " component " << c;
+    EXPECT_GT(f[2], 1.0) << type; // in contact, pushed up
+    return analysis.displacement();
+  };
+  const std::vector<double> reference = outcome("generalized_newton");
+  for (const std::string type : {"semismooth_newton", "bipotential_uzawa"})
+    EXPECT_LT(test::relative_difference(outcome(type), reference), 1e-8) << type;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Shapes, RoundObstacle3d,
+    testing::Values("{type: sphere, point: [0.5, 0.5, 1.499], radius: 1.0}",
+                    "{type: cylinder, point: [0.5, 0, 1.499], axis: [0, 1, 0], radius: 1.0}"));
 
 } // namespace
 } // namespace bipot
