@@ -9,6 +9,29 @@
 
 namespace bipot::app {
 
+namespace {
+
+// A node held by a bonded obstacle already has every component prescribed: a boundary
+// condition of its own would silently lose to the obstacle's motion.
+void held_node_conditions(const Model& model, std::vector<Index> held,
+                          std::vector<std::string>& problems) {
+  if (held.empty()) return;
+  std::sort(held.begin(), held.end());
+  for (const auto& stage : model.spec.stages)
+    for (const auto& bc : stage.boundary_conditions) {
+      if (!model.mesh.node_sets.count(bc.set) && !model.mesh.facet_sets.count(bc.set)) continue;
+      for (Index n : model.mesh.set_nodes(bc.set))
+        if (std::binary_search(held.begin(), held.end(), n)) {
+          problems.push_back(bc.where + ": " + model.mesh.describe_node(n) + " of set '" + bc.set +
+                             "' is held by a perfectly bonded obstacle, which prescribes its "
+                             "displacement; remove the condition or move the obstacle");
+          break;
+        }
+    }
+}
+
+} // namespace
+
 Model checked_model(const ProblemSpec& spec) {
   Model model = build_model(spec);
   // Every interface's pairs coincide on purpose; those that can open do not hold one body to
@@ -33,6 +56,7 @@ Model checked_model(const ProblemSpec& spec) {
   const MeshSpec& m = model.spec.mesh;
   const std::string where = m.where + (m.has_blocks || m.file.empty() ? "" : ": " + m.file);
   std::vector<std::string> problems = conflicting_conditions(model.spec, model.mesh);
+  held_node_conditions(model, held, problems);
   const auto mesh = mesh_problems(model.mesh, model.kinematics, joined, where);
   problems.insert(problems.end(), mesh.begin(), mesh.end());
   // Rigid motions of a mesh with NaN nodes or inverted cells would only add noise.

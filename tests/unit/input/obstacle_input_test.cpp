@@ -117,5 +117,22 @@ TEST(ObstacleInput, FreeBodiesBesideObstacles) {
   EXPECT_EQ(check(replace(loose, "law: coulomb_signorini", "law: perfect_bonding")), "");
 }
 
+// A condition on a node that a bonded obstacle holds is an error at the condition.
+TEST(ObstacleInput, ConditionOnANodeHeldByABondedObstacle) {
+  const std::string text = replace(replace(base, "law: coulomb_signorini", "law: perfect_bonding"),
+                                   "      - {set: top, component: x, value: 0}\n",
+                                   "      - {set: left, component: x, value: 0}\n");
+  std::string message;
+  try {
+    app::checked_model(read_problem_text(text, "in.yaml"));
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("in.yaml:18:15: stages[0].boundary_conditions[0].set: node 0 at (0, 0) "
+                         "of set 'left' is held by a perfectly bonded obstacle"),
+            std::string::npos)
+      << message;
+}
+
 } // namespace
 } // namespace bipot
