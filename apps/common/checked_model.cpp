@@ -57,7 +57,10 @@ Model checked_model(const ProblemSpec& spec) {
   const std::string where = m.where + (m.has_blocks || m.file.empty() ? "" : ": " + m.file);
   std::vector<std::string> problems = conflicting_conditions(model.spec, model.mesh);
   held_node_conditions(model, held, problems);
-  const auto mesh = mesh_problems(model.mesh, model.kinematics, joined, where);
+  std::vector<Index> references;
+  for (const RigidBody& b : model.rigid_bodies)
+    references.insert(references.end(), {b.reference, b.rotation});
+  const auto mesh = mesh_problems(model.mesh, model.kinematics, joined, where, references);
   problems.insert(problems.end(), mesh.begin(), mesh.end());
   // Rigid motions of a mesh with NaN nodes or inverted cells would only add noise.
   if (mesh.empty()) {

@@ -162,7 +162,8 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     t0 = std::chrono::steady_clock::now();
     schur.expand(z.head(nI), du);
     summary.solve_seconds += seconds_since(t0);
-    const std::vector<double> du_all = du.gather_all();
+    std::vector<double> du_all = du.gather_all();
+    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     for (std::size_t i = 0; i < u.size(); ++i)
       u[i] += du_all[i];
     sys.set_multipliers(z.tail(n - nI));

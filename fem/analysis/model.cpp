@@ -30,10 +30,7 @@ std::vector<std::string> keys_of(const std::map<std::string, std::vector<Index>>
 
 std::string unknown_set(const std::string& kind, const std::string& name,
                         const std::vector<std::string>& known) {
-  std::string msg = "no " + kind + " named '" + name + "' in the mesh";
-  const auto near = nearest_name(name, known);
-  if (!near.empty()) msg += " (did you mean '" + near + "'?)";
-  return msg + "; available: " + (known.empty() ? std::string("none") : join_names(known));
+  return unknown_in_mesh(kind, name, known);
 }
 
 contact::RigidObstacle rigid_obstacle(const ObstacleSpec& spec) {
@@ -263,6 +260,7 @@ Model build_model(const ProblemSpec& spec) {
   if (!problems.empty()) throw InputError(problems);
   split_interfaces(model);
   restrict_sets_to_regions(spec.mesh, model.mesh);
+  add_rigid_bodies(model); // last: its reference nodes end the mesh
   return model;
 }
 

@@ -16,6 +16,24 @@ std::vector<std::string> component_names(const Model& model) {
   if (model.kinematics == Kinematics::PlaneStrain) return {"x", "y"};
   return {"x", "y", "z"};
 }
+// rigid_bodies.csv: per body, its reference node's displacements and rotations, then what
+// it transmits to the body (forces, moments about the reference point).
+std::unique_ptr<CsvWriter> rigid_body_csv(const Model& model, const std::string& directory) {
+  std::vector<std::string> motion = {"ux", "uy", "rz"}, force = {"fx", "fy", "mz"};
+  if (model.kinematics == Kinematics::Axisymmetric)
+    motion = {"ur", "uz"}, force = {"fr", "fz"};
+  else if (model.kinematics == Kinematics::ThreeD)
+    motion = {"ux", "uy", "uz", "rx", "ry", "rz"}, force = {"fx", "fy", "fz", "mx", "my", "mz"};
+  std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
+  for (const RigidBody& b : model.rigid_bodies) {
+    for (const auto& c : motion)
+      cols.push_back(b.name + "_" + c);
+    for (const auto& c : force)
+      cols.push_back(b.name + "_" + c);
+  }
+  return std::make_unique<CsvWriter>(directory + "/rigid_bodies.csv", cols);
+}
+
 } // namespace
 
 ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string directory)
@@ -78,6 +96,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
     for (const auto& [set, component] : reaction_columns_)
       columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
+    if (!model.rigid_bodies.empty()) rigid_bodies_ = rigid_body_csv(model, directory_);
   }
 }
 
@@ -99,6 +118,13 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
   if (reactions_) reactions_->write_row(row);
+  if (rigid_bodies_) {
+    row.resize(4);
+    for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b)
+      for (double v : analysis.rigid_body_state(b))
+        row.push_back(v);
+    rigid_bodies_->write_row(row);
+  }
   const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;

@@ -55,6 +55,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       for (Index node : set_nodes(bc.set))
         target[dofs.dof(node, bc.component)] = bc.value;
     begin_obstacle_stage(stage);
+    begin_rigid_body_stage(stage);
     start.clear();
     for (const auto& [d, v] : target)
       start[d] = u[d];
@@ -187,6 +188,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       reaction_scale = reaction.norm2();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
       tied_obstacle_forces();
+      record_rigid_body_forces();
       summary.assembly_seconds += seconds_since(t0);
 
       StepReport rep;
@@ -248,6 +250,19 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   }
   summary.seconds = seconds_since(run_start);
   return summary;
+}
+
+std::vector<double> StaticAnalysis::rigid_body_state(std::size_t body) const {
+  const Model& m = impl_->model;
+  const RigidBody& b = m.rigid_bodies.at(body);
+  const int n = rigid_body_components(m.kinematics);
+  std::vector<double> out(2 * n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const Index d = rigid_body_dof(b, impl_->dofs, m.kinematics, k);
+    out[k] = impl_->u[d];
+    out[n + k] = impl_->rigid_force_all.empty() ? 0.0 : impl_->rigid_force_all[d];
+  }
+  return out;
 }
 
 const std::vector<std::unique_ptr<contact::InterfaceAssembler>>&

@@ -85,6 +85,19 @@ struct ObstacleDisplacementSpec {
   std::string where;
 };
 
+/// A condition on a rigid body's reference node in a stage: a prescribed displacement or
+/// rotation (`value`, reached at the end of the stage and ramped like a boundary condition),
+/// or a force or moment (`force`, ramped like a load). A component not named is free.
+struct RigidBodyConditionSpec {
+  std::string body;
+  /// Translations 0..d−1, then rotations (plane strain: 2 = rz; 3D: 3, 4, 5 = rx, ry, rz);
+  /// axisymmetric: 1 (z) only.
+  int component = 0;
+  double value = 0; ///< m or rad; kN or kN·m for a force (per unit thickness in plane strain)
+  bool force = false;
+  std::string where;
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -96,6 +109,7 @@ struct StageSpec {
   std::vector<LoadSpec> loads;
   std::vector<InterfaceGapSpec> interface_gaps;
   std::vector<ObstacleDisplacementSpec> obstacle_displacements;
+  std::vector<RigidBodyConditionSpec> rigid_body_conditions;
   std::string where;
 };
 
@@ -128,6 +142,15 @@ struct InterfaceSpec {
   std::string where;
 };
 
+/// A rigid body: the nodes of a region's cells (or of a node or facet set) move with a
+/// reference node at `reference_point` (default: the nodes' centroid).
+struct RigidBodySpec {
+  std::string name;
+  std::string region, set; ///< exactly one given
+  std::vector<double> reference_point;
+  std::string where;
+};
+
 struct ContactSolverSpec {
   std::string type = "generalized_newton";
   ParameterSet parameters; ///< validated against the solver's schema
@@ -148,6 +171,7 @@ struct ProblemSpec {
   ParameterSet linear_solver; ///< validated against LinearSolver's schema
   std::vector<InitialStressSpec> initial_stress;
   std::vector<InterfaceSpec> interfaces;
+  std::vector<RigidBodySpec> rigid_bodies;
   ContactSolverSpec contact_solver;
   std::vector<StageSpec> stages;
   OutputSpec output;

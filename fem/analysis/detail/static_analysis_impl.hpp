@@ -9,6 +9,7 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/load_assembler.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
@@ -84,6 +85,7 @@ struct StaticAnalysis::Impl {
   int dim;
   DofMap dofs;
   DofDistribution dist;
+  RigidBodyConstraints rigid; ///< the rigid bodies' master–slave transformation
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
@@ -120,6 +122,13 @@ struct StaticAnalysis::Impl {
   /// Reads the stage's obstacle displacements; holds the nodes of tied obstacle interfaces to
   /// their obstacle (entries of `target`). Before `start` is filled (obstacle_motion.cpp).
   void begin_obstacle_stage(const StageSpec& stage);
+  // Rigid bodies (rigid_body_motion.cpp): prescribed components of the reference nodes
+  // (entries of `target`, before `start` is filled), forces and moments on them plus the
+  // slaves' loads moved to the masters, and what the reference nodes transmit.
+  void begin_rigid_body_stage(const StageSpec& stage);
+  void add_rigid_body_loads(const StageSpec& stage, DistributedVector& F) const;
+  void record_rigid_body_forces();
+  std::vector<double> rigid_force_all; ///< f_int at the master DOFs (others 0), all DOFs
   /// Sets every obstacle's translation at load factor `lambda` of the stage.
   void move_obstacles(double lambda);
   /// Tied obstacle interfaces, for output: the force on the obstacle is minus the reactions
@@ -129,6 +138,7 @@ struct StaticAnalysis::Impl {
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
         dofs(m.mesh.num_nodes(), dim), dist(m.mesh.num_nodes(), dim),
+        rigid(m.mesh, m.kinematics, dofs, m.rigid_bodies),
         cell_owned(analysis_detail::owned_cell_flags(m.mesh, dist)),
         solid(m.mesh, m.kinematics, dofs, m.material_of_region,
               analysis_detail::indices_of(cell_owned)),
@@ -142,7 +152,9 @@ struct StaticAnalysis::Impl {
       has_contact = has_contact || !interfaces.back()->tied();
     }
     SparsityPattern pattern;
+    if (!rigid.empty()) solid.set_rigid_bodies(&rigid);
     solid.add_to_pattern(pattern);
+    rigid.add_inactive_rows(dist, pattern);
     for (const auto& ia : interfaces)
       ia->add_to_pattern(pattern);
     K = std::make_unique<SparseMatrix>(dist, pattern);
@@ -214,6 +226,7 @@ struct StaticAnalysis::Impl {
       }
     }
     F.finish_assembly();
+    add_rigid_body_loads(stage, F);
   }
 
   struct IncrementLog {

@@ -117,7 +117,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
   const auto entries =
       list_entries(top, "stages",
                    {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-                    "loads", "interface_gaps", "obstacle_displacements"},
+                    "loads", "interface_gaps", "obstacle_displacements", "rigid_bodies"},
                    expected);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
@@ -135,6 +135,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    if (m.has("rigid_bodies")) read_stage_rigid_bodies(m, kinematics, st);
     if (m.has("obstacle_displacements"))
       read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
     out.push_back(std::move(st));
