@@ -7,6 +7,7 @@
 #include "fem/input/problem_spec.hpp"
 #include "fem/mesh/mesh.hpp"
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,14 @@ struct OpeningInterface {
   /// m: the smallest initial normal opening of its pairs, initial_gap included; < 0 when the
   /// bodies start overlapping (pressed together).
   double smallest_gap = 0;
+};
+
+/// A rigid body's reference node (fem/assembly/rigid_body_constraint.hpp), for the checks:
+/// its conditions (the stage's `rigid_bodies`) act on the body holding `node`.
+struct ReferenceNode {
+  std::string name;                     ///< the rigid body's
+  Index node = -1;                      ///< one node of the rigid body
+  std::array<double, 3> point{0, 0, 0}; ///< the reference point
 };
 
 /// For every stage, the bodies its displacement conditions leave free to move rigidly. A body
@@ -43,9 +52,13 @@ struct OpeningInterface {
 /// Conditions on sets the mesh lacks are skipped (reported elsewhere).
 /// A rigid obstacle holds a body like another body would; one that a stage (or an earlier
 /// one) moves may press it. `held_nodes` are fixed in every component in every stage (the
-/// nodes a perfectly bonded obstacle holds).
+/// nodes a perfectly bonded obstacle holds). A rigid body's reference node holds the body
+/// its nodes belong to in the components a stage prescribes (a translation as a node at the
+/// reference point would, a rotation that rotation), and a force or moment on it may press
+/// that body onto its interfaces.
 std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Mesh& mesh,
                                                const std::vector<OpeningInterface>& interfaces,
-                                               const std::vector<Index>& held_nodes = {});
+                                               const std::vector<Index>& held_nodes = {},
+                                               const std::vector<ReferenceNode>& references = {});
 
 } // namespace bipot
