@@ -85,6 +85,7 @@ void InterfaceAssembler::add_to_pattern(SparsityPattern& pattern) const {
     if (!owned_[i]) continue;
     const Index nodes[2] = {iface_.pairs[i].node_a, iface_.pairs[i].node_b};
     dofs_.node_dofs(nodes, nodes[1] == rigid_obstacle ? 1 : 2, block);
+    if (rigid_) rigid_->distribute(block);
     pattern.add_cell(block);
   }
 }
@@ -100,9 +101,12 @@ void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
     // 1/W_ii with W_ii ≈ 1/k_a + 1/k_b: the local flexibility of the two bodies at the pair,
     // per unit area (k from the bulk diagonal, smallest over the components).
     double ka = INFINITY, kb = INFINITY;
+    // A rigid body's slave (identity row) is infinitely stiff, like an obstacle.
+    auto stiff = [&](Index dof) { return rigid_ && rigid_->is_slave(dof); };
     for (int c = 0; c < dim_; ++c) {
-      ka = std::min(ka, diagonal_all[dofs_.dof(p.node_a, c)]);
-      if (p.node_b != rigid_obstacle) kb = std::min(kb, diagonal_all[dofs_.dof(p.node_b, c)]);
+      if (!stiff(dofs_.dof(p.node_a, c))) ka = std::min(ka, diagonal_all[dofs_.dof(p.node_a, c)]);
+      if (p.node_b != rigid_obstacle && !stiff(dofs_.dof(p.node_b, c)))
+        kb = std::min(kb, diagonal_all[dofs_.dof(p.node_b, c)]);
     }
     const double k = (ka > 0 && kb > 0) ? 1.0 / (1.0 / ka + 1.0 / kb) : std::max(ka, kb);
     const double bulk = p.weight > 0 ? k / p.weight : k;
@@ -209,8 +213,19 @@ void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMat
         for (int c = 0; c < dim_; ++c)
           Kl[r * dim_ + c] = Kt(r, c);
     }
-    const int m = p.node_b == rigid_obstacle ? dim_ : n;
+    int m = p.node_b == rigid_obstacle ? dim_ : n;
     dofs_.node_dofs(nodes, m / dim_, block);
+    if (rigid_ && (rigid_->is_slave(block.front()) || rigid_->is_slave(block.back()))) {
+      // Onto the rigid body's reference node; Kl and Rl compacted to the m × m system first.
+      std::vector<double> Km(static_cast<std::size_t>(m) * m), Rm(Rl.begin(), Rl.begin() + m);
+      for (int r = 0; r < m; ++r)
+        for (int c = 0; c < m; ++c)
+          Km[r * m + c] = Kl[r * (m == n ? n : dim_) + c];
+      rigid_->distribute(block, Rm, K ? &Km : nullptr);
+      m = static_cast<int>(block.size());
+      Rl = Rm;
+      Kl = Km;
+    }
     if (K) {
       constraints.condense(block.data(), m, Kl.data(), Rl.data());
       K->add_dense(block.data(), m, Kl.data());

@@ -18,6 +18,7 @@
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 
 #include <vector>
 
@@ -59,6 +60,9 @@ public:
                      const DofDistribution& dist);
 
   const Interface& interface() const { return iface_; }
+  /// Rigid bodies (not owned, null for none): pairs on a body's nodes put their blocks on
+  /// its reference node (the augmented-Lagrangian solvers; generalized_newton refuses them).
+  void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
   const InterfaceLaw& law() const { return law_; }
   bool tied() const { return law_.is_tied(); }
   std::size_t num_pairs() const { return iface_.pairs.size(); }
@@ -149,6 +153,7 @@ private:
   const Interface& iface_;
   const InterfaceLaw& law_;
   const DofMap& dofs_;
+  const RigidBodyConstraints* rigid_ = nullptr;
   int dim_;
   std::vector<bool> owned_;
   std::vector<double> rho_;

@@ -31,7 +31,7 @@ struct Model {
 /// Adds the rigid bodies of model.spec to the model (rigid_bodies.cpp): their nodes, and two
 /// reference nodes per body appended to the mesh. Throws InputError, each problem at its
 /// place, for an unknown region or set (with the nearest name), a body without nodes, nodes
-/// of two bodies or of an interface, a boundary condition on a body's node, and a stage
+/// of two bodies, a boundary condition on a body's node, and a stage
 /// naming an unknown body.
 void add_rigid_bodies(Model& model);
 

@@ -61,12 +61,6 @@ void add_rigid_bodies(Model& model) {
   }
   Mesh& mesh = model.mesh;
   std::vector<std::string> problems;
-  std::set<Index> interface_nodes;
-  for (const auto& iface : model.interfaces)
-    for (const auto& p : iface.pairs) {
-      interface_nodes.insert(p.node_a);
-      if (p.node_b >= 0) interface_nodes.insert(p.node_b);
-    }
   std::vector<int> body_of(mesh.num_nodes(), -1);
   std::vector<std::string> names;
   for (std::size_t k = 0; k < spec.rigid_bodies.size(); ++k) {
@@ -84,13 +78,6 @@ void add_rigid_bodies(Model& model) {
       }
       body_of[n] = static_cast<int>(k);
     }
-    for (Index n : body.nodes)
-      if (interface_nodes.count(n)) {
-        problems.push_back(b.where + ": rigid body '" + b.name + "': " + mesh.describe_node(n) +
-                           " is on an interface; a rigid body's nodes cannot be interface nodes "
-                           "(not supported)");
-        break;
-      }
     if (!b.reference_point.empty()) {
       for (std::size_t i = 0; i < b.reference_point.size(); ++i)
         body.point[i] = b.reference_point[i];
@@ -101,6 +88,36 @@ void add_rigid_bodies(Model& model) {
     }
     model.rigid_bodies.push_back(std::move(body));
   }
+  // A bonded obstacle prescribes its nodes: they cannot also follow a reference node.
+  for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
+    if (!model.interfaces[k].obstacle || !model.interface_laws[k]->is_tied()) continue;
+    for (const auto& p : model.interfaces[k].pairs)
+      if (body_of[p.node_a] >= 0) {
+        problems.push_back(spec.interfaces[k].where + ": interface '" + model.interfaces[k].name +
+                           "': " + mesh.describe_node(p.node_a) +
+                           " is held by this bonded obstacle and belongs to rigid body '" +
+                           spec.rigid_bodies[body_of[p.node_a]].name +
+                           "'; bond the body through its reference node instead");
+        break;
+      }
+  }
+  // generalized_newton condenses on the interface DOFs, which must be unknowns.
+  if (model.contact_solver.exact_newton())
+    for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
+      if (model.interface_laws[k]->is_tied()) continue;
+      for (const auto& p : model.interfaces[k].pairs) {
+        const Index n = body_of[p.node_a] >= 0 ? p.node_a : p.node_b;
+        if (n < 0 || body_of[n] < 0) continue;
+        problems.push_back(
+            (spec.contact_solver.where.empty() ? spec.file : spec.contact_solver.where) +
+            ": contact_solver.type: generalized_newton condenses the model on its "
+            "interface nodes, and " +
+            mesh.describe_node(n) + " of interface '" + model.interfaces[k].name +
+            "' belongs to rigid body '" + spec.rigid_bodies[body_of[n]].name +
+            "'; use semismooth_newton or bipotential_uzawa");
+        break;
+      }
+    }
   // A boundary condition on a body's node would fight its reference node.
   for (const auto& stage : spec.stages) {
     for (const auto& bc : stage.boundary_conditions) {

@@ -155,8 +155,10 @@ struct StaticAnalysis::Impl {
     if (!rigid.empty()) solid.set_rigid_bodies(&rigid);
     solid.add_to_pattern(pattern);
     rigid.add_inactive_rows(dist, pattern);
-    for (const auto& ia : interfaces)
+    for (const auto& ia : interfaces) {
+      if (!rigid.empty()) ia->set_rigid_bodies(&rigid);
       ia->add_to_pattern(pattern);
+    }
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
