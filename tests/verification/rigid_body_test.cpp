@@ -219,17 +219,22 @@ TEST(RigidBody, MomentIn3d) {
 // A rigid cap pressing a block onto a rigid plane with friction, then pushed sideways by a
 // force below mu N: the contact solvers agree (1e-8) and, with the cap's rotation held,
 // the plane carries exactly the cap's force (equilibrium, 1e-9); 1 and 2 ranks agree.
+// An elastic block under a rigid cap of the same width.
+const std::string soil_and_cap =
+    "kinematics: plane_strain\n"
+    "mesh:\n  blocks:\n    cell: quad4\n"
+    "    x: {breaks: [0, 1.0], cells: [4]}\n"
+    "    y: {breaks: [0, 0.5, 0.6], cells: [3, 1]}\n"
+    "    regions: [soil, cap]\n"
+    "materials:\n"
+    "  soil: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+    "  cap: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
+    "linear_solver: {method: direct}\n"
+    "rigid_bodies:\n  - {name: cap, region: cap}\n";
+
 std::string capped_block(const std::string& solver) {
-  return "kinematics: plane_strain\n"
-         "mesh:\n  blocks:\n    cell: quad4\n"
-         "    x: {breaks: [0, 1.0], cells: [4]}\n"
-         "    y: {breaks: [0, 0.5, 0.6], cells: [3, 1]}\n"
-         "    regions: [soil, cap]\n"
-         "materials:\n"
-         "  soil: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
-         "  cap: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
-         "linear_solver: {method: direct}\n"
-         "rigid_bodies:\n  - {name: cap, region: cap}\n"
+  return soil_and_cap +
+
          "interfaces:\n  - name: floor\n    facet_sets: [bottom]\n"
          "    obstacle: {type: plane, point: [0, 0], normal: [0, 1]}\n"
          "    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}\n"
@@ -330,16 +335,8 @@ TEST(RigidBody, RigidBlockSlidesOnARigidPlane) {
 // the interface passes (μ N, −N) to the block; both augmented-Lagrangian solvers agree.
 TEST(RigidBody, RigidCapSlidesOnAnElasticBlock) {
   const auto text = [](const std::string& solver) {
-    return "kinematics: plane_strain\n"
-           "mesh:\n  blocks:\n    cell: quad4\n"
-           "    x: {breaks: [0, 1.0], cells: [4]}\n"
-           "    y: {breaks: [0, 0.5, 0.6], cells: [3, 1]}\n"
-           "    regions: [soil, cap]\n"
-           "materials:\n"
-           "  soil: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
-           "  cap: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
-           "linear_solver: {method: direct}\n"
-           "rigid_bodies:\n  - {name: cap, region: cap}\n"
+    return soil_and_cap +
+
            "interfaces:\n  - name: joint\n    between: [cap, soil]\n"
            "    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}\n"
            "contact_solver: {type: " +
