@@ -67,8 +67,7 @@ Model checked_model(const ProblemSpec& spec) {
     std::vector<ReferenceNode> reference_nodes;
     for (const RigidBody& b : model.rigid_bodies)
       reference_nodes.push_back({b.name, b.nodes.empty() ? Index(-1) : b.nodes.front(), b.point});
-    const auto free =
-        free_rigid_body_modes(model.spec, model.mesh, opening, held, reference_nodes);
+    const auto free = free_rigid_body_modes(model.spec, model.mesh, opening, held, reference_nodes);
     problems.insert(problems.end(), free.begin(), free.end());
   }
   if (!problems.empty()) throw InputError(problems);

@@ -360,8 +360,8 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
           if (component < mesh.dim) // a translation: as a node at the reference point
             rows(row, k) = m.value(k, ref->point, component);
           else // a rotation about axis component − dim (2D: z)
-            rows(row, k) = k < nt ? 0.0
-                                  : m.axis(k - nt)(mesh.dim == 2 ? 2 : component - 3) / m.radius;
+            rows(row, k) =
+                k < nt ? 0.0 : m.axis(k - nt)(mesh.dim == 2 ? 2 : component - 3) / m.radius;
       }
       const MatrixXd free = null_space(rows);
       if (free.cols() == 0) continue;
