@@ -370,5 +370,40 @@ TEST(RigidBody, RigidCapSlidesOnAnElasticBlock) {
   EXPECT_LT(test::relative_difference(uzawa.u, newton.u), 1e-8);
 }
 
+// The pile head as a rigid cap (axisymmetric): the pile's top nodes, the shaft interface's
+// top node among them, move axially as one; pulled by F, the pile hands F to the soil
+// through its RCCM interface (still bonded), and the soil's base holds it (1e-9).
+TEST(RigidBody, PileHeadAsARigidCap) {
+  const std::string text =
+      "kinematics: axisymmetric\n"
+      "mesh:\n  blocks:\n    cell: quad8\n"
+      "    x: {breaks: [0, 0.135, 2.0], cells: [2, 8], grading: [1, 1.3]}\n"
+      "    y: {breaks: [-6.0, -4.0, 0], cells: [4, 8]}\n"
+      "    regions: [soil, soil, pile, soil]\n"
+      "  sets:\n"
+      "    head: {min: [0, 0], max: [0.135, 0], region: pile}\n"
+      "    far: {min: [2.0, -6.0], max: [2.0, 0]}\n"
+      "materials:\n"
+      "  soil: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.3}\n"
+      "  pile: {type: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.2}\n"
+      "linear_solver: {method: direct}\n"
+      "rigid_bodies:\n  - {name: cap, set: head}\n"
+      "interfaces:\n  - name: skin\n    between: [pile, soil]\n    law: rccm\n"
+      "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
+      "decohesion_energy: 0.5, friction_coefficient: 0.5}\n"
+      "contact_solver: {type: semismooth_newton, tolerance: 1.0e-11}\n"
+      "stages:\n  - name: pull\n    increments: 2\n    boundary_conditions:\n"
+      "      - {set: bottom, component: z, value: 0}\n"
+      "      - {set: far, component: r, value: 0}\n"
+      "    rigid_bodies:\n      - {body: cap, component: z, force: 20}\n";
+  const Result r = solve(text, "bottom");
+  ASSERT_EQ(r.state.size(), 4u);
+  EXPECT_GT(r.state[1], 0.0); // pulled up
+  EXPECT_LT(r.follow_error, 1e-16);
+  EXPECT_NEAR(r.state[3], 20.0, 1e-10 * 20);
+  EXPECT_NEAR(r.resultant[1], 20.0, 1e-9 * 20); // the pile pulls the soil up
+  EXPECT_NEAR(r.base[1], -20.0, 1e-9 * 20);
+}
+
 } // namespace
 } // namespace bipot
