@@ -126,4 +126,25 @@ double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) cons
   return worst;
 }
 
+double InterfaceNewtonSystem::released_adhesion_energy(Eigen::VectorXd* grad) const {
+  double released = 0;
+  for (InterfaceAssembler* ia : interfaces_) {
+    const double per_beta = ia->law().adhesion_energy(1.0) - ia->law().adhesion_energy(0.0);
+    if (per_beta == 0.0) continue;
+    const std::vector<double> committed = ia->committed_adhesion();
+    for (const PairSlots& s : pairs_) {
+      if (s.iface != ia) continue;
+      const double A = ia->interface().pairs[s.pair].weight;
+      released += A * per_beta * (committed[s.pair] - ia->results()[s.pair].beta);
+      if (!grad) continue;
+      // jump = Qᵀ(u_b − u_a): ∂β/∂x_b = Q ∂β/∂jump, ∂β/∂x_a its opposite.
+      const Eigen::VectorXd g =
+          -A * per_beta * (ia->frame(s.pair) * ia->derivatives(s.pair).dbeta_djump);
+      grad->segment(s.b, dim_) += g;
+      grad->segment(s.a, dim_) -= g;
+    }
+  }
+  return released;
+}
+
 } // namespace bipot::contact

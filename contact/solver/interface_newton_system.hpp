@@ -53,6 +53,12 @@ public:
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const;
 
+  /// Σ_i A_i [E(β_i,committed) − E(β_i)], E = the law's adhesion_energy: the energy that
+  /// adhesion loss has released since the last converged increment, at the interfaces' last
+  /// evaluate() (kJ). With grad, adds its derivatives with respect to x (through β's
+  /// dependence on the jump): the row a dissipation-controlled step borders J with.
+  double released_adhesion_energy(Eigen::VectorXd* grad) const;
+
 private:
   struct PairSlots {
     InterfaceAssembler* iface;

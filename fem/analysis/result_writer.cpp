@@ -16,6 +16,13 @@ std::vector<std::string> component_names(const Model& model) {
   if (model.kinematics == Kinematics::PlaneStrain) return {"x", "y"};
   return {"x", "y", "z"};
 }
+// How each step was reached, last in every CSV row: the same flags as the progress lines.
+const std::vector<std::string> flag_columns = {"cutbacks", "staggered", "unstable", "traced"};
+void add_flags(const StepReport& r, std::vector<double>& row) {
+  row.insert(row.end(), {static_cast<double>(r.cutbacks), static_cast<double>(r.staggered),
+                         r.unstable ? 1.0 : 0.0, r.traced ? 1.0 : 0.0});
+}
+
 // rigid_bodies.csv: per body, its reference node's displacements and rotations, then what
 // it transmits to the body (forces, moments about the reference point).
 std::unique_ptr<CsvWriter> rigid_body_csv(const Model& model, const std::string& directory) {
@@ -31,6 +38,7 @@ std::unique_ptr<CsvWriter> rigid_body_csv(const Model& model, const std::string&
     for (const auto& c : force)
       cols.push_back(b.name + "_" + c);
   }
+  cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
   return std::make_unique<CsvWriter>(directory + "/rigid_bodies.csv", cols);
 }
 
@@ -88,6 +96,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
       for (const auto& c : component_names(model))
         cols.push_back("force_" + c);
+      cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
       interface_csv_.push_back(
           std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
     }
@@ -95,6 +104,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
     const auto names = component_names(model);
     for (const auto& [set, component] : reaction_columns_)
       columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
+    columns.insert(columns.end(), flag_columns.begin(), flag_columns.end());
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
     if (!model.rigid_bodies.empty()) rigid_bodies_ = rigid_body_csv(model, directory_);
   }
@@ -117,15 +127,18 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     reactions.push_back(analysis.reaction(s));
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
+  add_flags(report, row);
   if (reactions_) reactions_->write_row(row);
   if (rigid_bodies_) {
     row.resize(4);
     for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b)
       for (double v : analysis.rigid_body_state(b))
         row.push_back(v);
+    add_flags(report, row);
     rigid_bodies_->write_row(row);
   }
-  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end;
+  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
+                   report.requested_output;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
@@ -150,6 +163,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
     const auto f = ia.resultant();
     for (int c = 0; c < dim; ++c)
       row.push_back(f[c]);
+    add_flags(report, row);
     interface_csv_[k]->write_row(row);
     if (!interface_vtk_[k] || !vtk_due) continue;
 

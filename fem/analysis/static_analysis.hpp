@@ -38,6 +38,8 @@ struct StepReport {
   /// (after a cut-back, the sub-increments end exactly on the next planned level).
   int planned_step = 0;
   bool stage_end = false; ///< the last increment of the stage (load factor 1)
+  /// Ends on a load factor the stage's `output_at` asks for (results and VTK are written).
+  bool requested_output = false;
   int global_step = 0;    ///< converged increments so far, 1-based
   double time = 0;        ///< pseudo-time at the end of the increment (s)
   double load_factor = 0; ///< λ within the stage, in (0, 1]
@@ -57,6 +59,12 @@ struct StepReport {
   /// Cut back, or a snap-back: an interface resultant component lost over 20% of its largest
   /// value (and over 5% of the largest interface force of the model) in one step.
   bool unstable = false;
+  /// Traced by path-following (stage `control:` arc_length or dissipation): λ was an unknown
+  /// of the step and may have decreased (an unstable branch).
+  bool traced = false;
+  /// Energy adhesion loss released in the increment (kJ, what dissipation control measures);
+  /// 0 outside path-following stages.
+  double dissipation = 0;
 };
 
 struct RunSummary {
@@ -66,7 +74,8 @@ struct RunSummary {
   int matrix_setups = 0;        ///< preconditioner/factorisation set-ups
   int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
-  int sub_increments = 0;       ///< converged increments that end between planned levels
+  int sub_increments = 0;       ///< converged increments between planned and asked levels
+  int traced_increments = 0;    ///< increments traced by path-following
   double failed_seconds = 0;    ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time

@@ -82,6 +82,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
+  input::check_stage_controls(spec, diag);
   return spec;
 }
 
@@ -103,6 +104,12 @@ ProblemSpec read_problem_file(const std::string& path) {
 
 ProblemSpec read_problem_text(const std::string& text, const std::string& file_name) {
   return parse(text, file_name, "");
+}
+
+void check_stage_controls(const ProblemSpec& spec) {
+  Diagnostics diag(spec.file);
+  input::check_stage_controls(spec, diag);
+  if (!diag.problems().empty()) throw InputError(diag.problems());
 }
 
 std::string describe_input_format() {

@@ -98,6 +98,20 @@ struct RigidBodyConditionSpec {
   std::string where;
 };
 
+/// How a stage advances its load factor λ (0 → 1 over the stage): `ramp` (default) in the
+/// planned increments; `arc_length` (Crisfield, cylindrical: the interface displacements move
+/// by a given length each step, λ follows and may decrease); `dissipation` (ramp while the
+/// interfaces do not dissipate, then each step dissipates `dissipation_step`; Gutiérrez 2004):
+/// both trace snap-backs that a ramp jumps over.
+struct ControlSpec {
+  std::string type = "ramp";
+  double arc_length = 0;       ///< first arc length (m); 0: that of the first increment
+  double dissipation_step = 0; ///< kJ per step; 0: remaining adhesion energy / increments
+  int max_increments = 0;      ///< path-following steps allowed; 0: 20 × increments
+  std::string where;
+  bool path_following() const { return type != "ramp"; }
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -110,6 +124,10 @@ struct StageSpec {
   std::vector<InterfaceGapSpec> interface_gaps;
   std::vector<ObstacleDisplacementSpec> obstacle_displacements;
   std::vector<RigidBodyConditionSpec> rigid_body_conditions;
+  ControlSpec control;
+  /// Load factors in (0, 1], increasing, at which the ramp also ends an increment and the
+  /// results (VTK included) are written, besides the planned levels k/increments.
+  std::vector<double> output_at;
   std::string where;
 };
 

@@ -5,6 +5,7 @@
 
 #include "contact/solver/interface_newton_system.hpp"
 #include "fem/analysis/initial_stress.hpp"
+#include "fem/analysis/path_control.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/assembly/constraints.hpp"
@@ -76,7 +77,41 @@ template <class Merit> double backtracking_step(double merit0, Merit merit) {
   return best < merit0 ? best_step : 1.0;
 }
 
+// The whole residual history of a failed increment, for failure.log.
+inline std::string residual_history_text(const std::vector<double>& history) {
+  std::ostringstream full;
+  full << "relative residual history of the failed increment (" << history.size() << " values):\n";
+  for (std::size_t i = 0; i < history.size(); ++i)
+    full << i + 1 << " " << history[i] << "\n";
+  return full.str();
+}
+
 } // namespace analysis_detail
+
+/// One path-following increment (stage `control:` arc_length or dissipation): the load
+/// factor's increment Δλ joins the unknowns of the generalized Newton step, bordered by one
+/// constraint g(x, λ_c, Δλ) = 0 (fem/analysis/path_constraint.cpp, docs/theory.md):
+///   arc_length:  ‖x‖ = L                                (Crisfield, cylindrical)
+///   dissipation: Σ A w (β_committed − β(x)) = Δτ          (Gutiérrez 2004)
+/// x the increment of the interface DOFs, β the adhesion the law gives at the trial jumps.
+struct PathStep {
+  enum class Kind { ArcLength, Dissipation } kind = Kind::ArcLength;
+  Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
+  double dlambda_prev = 0, length = 0; ///< Δλ_prev; arc_length: L (m)
+  Eigen::VectorXd u0, f0;              ///< dissipation: at the increment's start
+  double dissipation = 0;              ///< Δτ (kJ)
+  double predictor_scale = 1;          ///< z0 = scale × (x_prev, Δλ_prev)
+  // Out: the converged increment.
+  Eigen::VectorXd x;
+  double dlambda = 0;
+
+  /// g and, with grad (size n + 1), its gradient with respect to (x, λ_c, Δλ), at z after
+  /// the interfaces were evaluated there.
+  double constraint(const contact::InterfaceNewtonSystem& sys, const Eigen::VectorXd& z,
+                    Eigen::VectorXd* grad) const;
+  /// The constraint's own scale (L or Δτ): |g| ≤ tolerance × scale is converged.
+  double scale() const { return kind == Kind::ArcLength ? length : dissipation; }
+};
 
 struct StaticAnalysis::Impl {
   const Model& model;
@@ -247,7 +282,10 @@ struct StaticAnalysis::Impl {
       if (!constraints.is_constrained(first + i)) r[i] += f[i];
   }
 
-  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log);
+  /// With `path`, `lambda` is the load factor at the increment's start and Δλ is solved for.
+  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log,
+                             PathStep* path = nullptr);
+  ReusedLuSolver path_matrix; ///< the bordered Newton matrices of path-following steps
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
   static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
   // Predictor of the next increment: its size over the last converged one's in this stage

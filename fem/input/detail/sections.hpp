@@ -15,6 +15,8 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
 const std::vector<std::string>& component_names(const std::string& kinematics);
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics);
+/// Cross-section rules of path-following stages (need the contact solver and interfaces).
+void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag);
 OutputSpec read_output(const YamlMap& top);
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics);
 /// An interface with `obstacle` (obstacle_section.cpp): the obstacle, and the one facet set
