@@ -134,5 +134,14 @@ TEST(ObstacleInput, ConditionOnANodeHeldByABondedObstacle) {
       << message;
 }
 
+// A path-following stage does not scale the obstacle's motion by its load factor.
+TEST(ObstacleInput, PathFollowingStageCannotMoveTheObstacle) {
+  const auto p = problems_of(base + "    control: arc_length\n"
+                                    "    obstacle_displacements:\n"
+                                    "      - {interface: floor, value: [0, 1.0e-3]}\n");
+  EXPECT_TRUE(has(p, "control arc_length: a path-following stage cannot also move obstacles or "
+                     "rigid bodies"));
+}
+
 } // namespace
 } // namespace bipot
