@@ -28,6 +28,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);
   }
+  move_obstacles(lambda);
   std::vector<Index> constrained_dofs;
   for (const auto& kv : target)
     constrained_dofs.push_back(kv.first);
@@ -216,7 +217,8 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     }
     schur.expand(z.head(nI), du);
     summary.solve_seconds += seconds_since(t0);
-    const std::vector<double> du_all = du.gather_all();
+    std::vector<double> du_all = du.gather_all();
+    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     for (std::size_t i = 0; i < u.size(); ++i)
       u[i] += du_all[i];
     sys.set_multipliers(z.segment(nI, n - nI));

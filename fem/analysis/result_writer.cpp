@@ -16,12 +16,30 @@ std::vector<std::string> component_names(const Model& model) {
   if (model.kinematics == Kinematics::PlaneStrain) return {"x", "y"};
   return {"x", "y", "z"};
 }
-
 // How each step was reached, last in every CSV row: the same flags as the progress lines.
 const std::vector<std::string> flag_columns = {"cutbacks", "staggered", "unstable", "traced"};
 void add_flags(const StepReport& r, std::vector<double>& row) {
   row.insert(row.end(), {static_cast<double>(r.cutbacks), static_cast<double>(r.staggered),
                          r.unstable ? 1.0 : 0.0, r.traced ? 1.0 : 0.0});
+}
+
+// rigid_bodies.csv: per body, its reference node's displacements and rotations, then what
+// it transmits to the body (forces, moments about the reference point).
+std::unique_ptr<CsvWriter> rigid_body_csv(const Model& model, const std::string& directory) {
+  std::vector<std::string> motion = {"ux", "uy", "rz"}, force = {"fx", "fy", "mz"};
+  if (model.kinematics == Kinematics::Axisymmetric)
+    motion = {"ur", "uz"}, force = {"fr", "fz"};
+  else if (model.kinematics == Kinematics::ThreeD)
+    motion = {"ux", "uy", "uz", "rx", "ry", "rz"}, force = {"fx", "fy", "fz", "mx", "my", "mz"};
+  std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
+  for (const RigidBody& b : model.rigid_bodies) {
+    for (const auto& c : motion)
+      cols.push_back(b.name + "_" + c);
+    for (const auto& c : force)
+      cols.push_back(b.name + "_" + c);
+  }
+  cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
+  return std::make_unique<CsvWriter>(directory + "/rigid_bodies.csv", cols);
 }
 
 } // namespace
@@ -46,8 +64,10 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
   if (rank == 0) {
     for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
       // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
-      // needs body 1 as a region: not for tied facet-set interfaces.
-      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2)
+      // needs body 1 as a region: not for tied facet-set interfaces (but tied obstacles:
+      // the reactions of the nodes they hold).
+      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2 &&
+          !model.interfaces[k].obstacle)
         continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);
@@ -92,6 +112,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
                                  "interference_work", "bulk_energy", "interface_energy",
                                  "adhesion_dissipation", "viscous_dissipation", "contact_work",
                                  "balance_error", "relative_error"});
+    if (!model.rigid_bodies.empty()) rigid_bodies_ = rigid_body_csv(model, directory_);
   }
 }
 
@@ -123,6 +144,14 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
                         e.external_work, e.interference_work, e.bulk_energy, e.interface_energy,
                         e.adhesion_dissipation, e.viscous_dissipation, e.contact_work,
                         e.balance_error(), put_in > 0 ? e.balance_error() / put_in : 0.0});
+  }
+  if (rigid_bodies_) {
+    row.resize(4);
+    for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b)
+      for (double v : analysis.rigid_body_state(b))
+        row.push_back(v);
+    add_flags(report, row);
+    rigid_bodies_->write_row(row);
   }
   const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
                    report.requested_output;

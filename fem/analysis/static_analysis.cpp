@@ -12,7 +12,7 @@ using namespace analysis_detail;
 void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
     const auto& spec = model.spec.interfaces[k];
-    if (!interfaces[k]->tied() || spec.between.size() != 2) continue;
+    if (!interfaces[k]->tied() || spec.between.size() != 2) continue; // obstacles: below
     const int region = model.mesh.regions.at(spec.between[0]);
     DistributedVector& f = du; // scratch: du is not needed between increments
     f.set_zero();
@@ -55,6 +55,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     for (const auto& bc : stage.boundary_conditions)
       for (Index node : set_nodes(bc.set))
         target[dofs.dof(node, bc.component)] = bc.value;
+    begin_obstacle_stage(stage);
+    begin_rigid_body_stage(stage);
     start.clear();
     for (const auto& [d, v] : target)
       start[d] = u[d];
@@ -244,6 +246,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       for (const auto& ia : interfaces)
         ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
+      tied_obstacle_forces();
+      record_rigid_body_forces();
       summary.assembly_seconds += seconds_since(t0);
 
       StepReport rep;
@@ -317,6 +321,19 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   }
   summary.seconds = seconds_since(run_start);
   return summary;
+}
+
+std::vector<double> StaticAnalysis::rigid_body_state(std::size_t body) const {
+  const Model& m = impl_->model;
+  const RigidBody& b = m.rigid_bodies.at(body);
+  const int n = rigid_body_components(m.kinematics);
+  std::vector<double> out(2 * n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const Index d = rigid_body_dof(b, impl_->dofs, m.kinematics, k);
+    out[k] = impl_->u[d];
+    out[n + k] = impl_->rigid_force_all.empty() ? 0.0 : impl_->rigid_force_all[d];
+  }
+  return out;
 }
 
 const std::vector<std::unique_ptr<contact::InterfaceAssembler>>&

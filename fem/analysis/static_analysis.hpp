@@ -117,6 +117,12 @@ public:
   /// Reaction force (f_int − f_ext) summed over the nodes of a node or facet set, one value
   /// per spatial component, at the last converged increment.
   std::vector<double> reaction(const std::string& set) const;
+  /// Rigid body `body` (Model::rigid_bodies order) at the last converged increment: its
+  /// reference node's components (rigid_body_components(): translations, then rotations)
+  /// followed by what the reference node transmits to the body along each (forces, kN;
+  /// moments, kN·m about the reference point): the applied load, or the reaction of a
+  /// prescribed component.
+  std::vector<double> rigid_body_state(std::size_t body) const;
   /// Interface states of the last converged increment (one assembler per interface).
   const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces() const;
   /// Committed cell averages of strain and stress for the cells this rank owns.

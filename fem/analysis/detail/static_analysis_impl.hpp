@@ -10,6 +10,7 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/load_assembler.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
@@ -119,6 +120,7 @@ struct StaticAnalysis::Impl {
   int dim;
   DofMap dofs;
   DofDistribution dist;
+  RigidBodyConstraints rigid; ///< the rigid bodies' master–slave transformation
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
@@ -151,10 +153,28 @@ struct StaticAnalysis::Impl {
   std::map<Index, double> target, start;
   // Interface gap shifts (per interface) at the start and the end of the current stage.
   std::vector<double> gap_start, gap_target;
+  // Obstacle translations (per interface) at the start and the end of the current stage.
+  std::vector<std::array<double, 3>> obstacle_start, obstacle_target;
+  /// Reads the stage's obstacle displacements; holds the nodes of tied obstacle interfaces to
+  /// their obstacle (entries of `target`). Before `start` is filled (obstacle_motion.cpp).
+  void begin_obstacle_stage(const StageSpec& stage);
+  // Rigid bodies (rigid_body_motion.cpp): prescribed components of the reference nodes
+  // (entries of `target`, before `start` is filled), forces and moments on them plus the
+  // slaves' loads moved to the masters, and what the reference nodes transmit.
+  void begin_rigid_body_stage(const StageSpec& stage);
+  void add_rigid_body_loads(const StageSpec& stage, DistributedVector& F) const;
+  void record_rigid_body_forces();
+  std::vector<double> rigid_force_all; ///< f_int at the master DOFs (others 0), all DOFs
+  /// Sets every obstacle's translation at load factor `lambda` of the stage.
+  void move_obstacles(double lambda);
+  /// Tied obstacle interfaces, for output: the force on the obstacle is minus the reactions
+  /// of the nodes it holds.
+  void tied_obstacle_forces();
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
         dofs(m.mesh.num_nodes(), dim), dist(m.mesh.num_nodes(), dim),
+        rigid(m.mesh, m.kinematics, dofs, m.rigid_bodies),
         cell_owned(analysis_detail::owned_cell_flags(m.mesh, dist)),
         solid(m.mesh, m.kinematics, dofs, m.material_of_region,
               analysis_detail::indices_of(cell_owned)),
@@ -168,9 +188,13 @@ struct StaticAnalysis::Impl {
       has_contact = has_contact || !interfaces.back()->tied();
     }
     SparsityPattern pattern;
+    if (!rigid.empty()) solid.set_rigid_bodies(&rigid);
     solid.add_to_pattern(pattern);
-    for (const auto& ia : interfaces)
+    rigid.add_inactive_rows(dist, pattern);
+    for (const auto& ia : interfaces) {
+      if (!rigid.empty()) ia->set_rigid_bodies(&rigid);
       ia->add_to_pattern(pattern);
+    }
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
@@ -240,6 +264,7 @@ struct StaticAnalysis::Impl {
       }
     }
     F.finish_assembly();
+    add_rigid_body_loads(stage, F);
   }
 
   struct IncrementLog {

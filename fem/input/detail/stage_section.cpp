@@ -153,11 +153,11 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries =
-      list_entries(top, "stages",
-                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-                    "loads", "interface_gaps", "control", "output_at"},
-                   expected);
+  const auto entries = list_entries(
+      top, "stages",
+      {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads",
+       "interface_gaps", "obstacle_displacements", "rigid_bodies", "control", "output_at"},
+      expected);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -174,6 +174,9 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    if (m.has("rigid_bodies")) read_stage_rigid_bodies(m, kinematics, st);
+    if (m.has("obstacle_displacements"))
+      read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("control")) read_control(m, st);
     if (m.reals("output_at", st.output_at) && m.has("output_at")) {
       for (std::size_t k = 0; k < st.output_at.size(); ++k) {
@@ -243,6 +246,11 @@ void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag) {
       diag.error_at(st.control.where, what + "a path-following stage cannot also ramp "
                                              "interface_gaps (the gap is not scaled by the load "
                                              "factor); give them their own stage");
+    if (!st.obstacle_displacements.empty() || !st.rigid_body_conditions.empty())
+      diag.error_at(st.control.where,
+                    what + "a path-following stage cannot also move obstacles or rigid bodies "
+                           "(their motion is not scaled by the load factor); give them their "
+                           "own stage");
     if (!stage_scales_something(spec.stages, i))
       diag.error_at(st.control.where,
                     what + "nothing to scale: the stage changes no boundary condition value and "
