@@ -9,7 +9,8 @@ double EnergyTotals::balance_error() const {
 }
 
 EnergyLedger::EnergyLedger(const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces)
-    : ifaces_(ifaces), pairs_(ifaces.size()), shift_(ifaces.size(), 0.0) {
+    : ifaces_(ifaces), pairs_(ifaces.size()), shift_(ifaces.size(), 0.0),
+      obstacle_(ifaces.size(), {0, 0, 0}) {
   for (std::size_t k = 0; k < ifaces.size(); ++k) {
     if (ifaces[k]->tied()) continue;
     const std::vector<double> beta = ifaces[k]->committed_adhesion();
@@ -24,6 +25,7 @@ EnergyLedger::EnergyLedger(const std::vector<std::unique_ptr<contact::InterfaceA
       p.beta = beta[i];
     }
     shift_[k] = ifaces[k]->gap_shift();
+    obstacle_[k] = ifaces[k]->obstacle_displacement();
   }
 }
 
@@ -50,6 +52,13 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
     const double w = ia.law().adhesion_energy(1.0) - ia.law().adhesion_energy(0.0);
     const double dshift = ia.gap_shift() - shift_[k];
     shift_[k] = ia.gap_shift();
+    // A moving obstacle is body 2 of its pairs: its displacement moves every jump.
+    const int dim = static_cast<int>(ia.multipliers().empty() ? 0 : ia.multipliers()[0].size());
+    Eigen::VectorXd d_obstacle = Eigen::VectorXd::Zero(dim);
+    if (ia.interface().obstacle)
+      for (int c = 0; c < dim; ++c)
+        d_obstacle(c) = ia.obstacle_displacement()[c] - obstacle_[k][c];
+    obstacle_[k] = ia.obstacle_displacement();
     for (std::size_t i = 0; i < ia.num_pairs(); ++i) {
       const double A = ia.interface().pairs[i].weight;
       const contact::PairResult& now = ia.results()[i];
@@ -68,6 +77,9 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
         totals_.viscous_dissipation += A * (-a.dot(now.jump) / now.beta - w) * dbeta;
       // A prescribed interference moves the normal jump without moving the bodies.
       totals_.interference_work -= 0.5 * A * (old.traction(0) + now.traction(0)) * dshift;
+      if (ia.interface().obstacle)
+        totals_.interference_work -=
+            0.5 * A * (old.traction + now.traction).dot(ia.frame(i).transpose() * d_obstacle);
       old = {now.jump, now.traction, now.r, now.beta};
     }
   }

@@ -9,6 +9,7 @@
 
 #include "contact/solver/interface_assembler.hpp"
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -16,8 +17,9 @@ namespace bipot {
 
 /// Cumulative energies since the start of the run (kJ; axisymmetric: full revolution).
 struct EnergyTotals {
-  double external_work = 0;        ///< loads and support reactions on the bodies
-  double interference_work = 0;    ///< prescribed interface gaps (installation)
+  double external_work = 0; ///< loads and support reactions on the bodies
+  /// Of prescribed interface motions: gaps (installation) and moving rigid obstacles.
+  double interference_work = 0;
   double bulk_energy = 0;          ///< work of the internal forces (elastic energy, linear bulk)
   double interface_energy = 0;     ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
   double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost
@@ -47,8 +49,9 @@ private:
   const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces_;
   EnergyTotals totals_;
   std::vector<double> u_, external_, internal_;
-  std::vector<std::vector<PairState>> pairs_; ///< per interface, per pair, at the last step
-  std::vector<double> shift_;                 ///< gap shift per interface at the last step
+  std::vector<std::vector<PairState>> pairs_;   ///< per interface, per pair, at the last step
+  std::vector<double> shift_;                   ///< gap shift per interface at the last step
+  std::vector<std::array<double, 3>> obstacle_; ///< obstacle displacement at the last step
 };
 
 } // namespace bipot
