@@ -97,8 +97,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
   if (reactions_) reactions_->write_row(row);
-  const bool due =
-      report.global_step % model_.spec.output.every == 0 || report.stage_end;
+  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
