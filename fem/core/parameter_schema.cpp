@@ -187,12 +187,19 @@ ParamSpec& ParamSchema::string(const std::string& key, const std::string& doc) {
   return add(std::move(s));
 }
 
+void ParamSchema::rule(std::string text,
+                       std::function<std::optional<ParamProblem>(const ParameterSet&)> check) {
+  rules_.push_back({std::move(text), std::move(check)});
+}
+
 std::string ParamSchema::describe() const {
   std::ostringstream os;
   os << name_ << ": " << doc_ << "\n";
   if (specs_.empty()) os << "  (no parameters)\n";
   for (const auto& s : specs_)
     os << "  " << s.name << " (" << s.summary() << ")\n";
+  for (const auto& r : rules_)
+    os << "  rule: " << r.text << "\n";
   return os.str();
 }
 
@@ -209,6 +216,9 @@ std::string ParamSchema::markdown_table() const {
                       : (s.default_value ? format_value(*s.default_value) : std::string("-")))
        << " | " << range << " | " << s.units << " | " << s.doc << " |\n";
   }
+  if (!rules_.empty()) os << "\nRules between keys:\n";
+  for (const auto& r : rules_)
+    os << "- " << r.text << "\n";
   return os.str();
 }
 
@@ -287,6 +297,9 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
       out.set(spec.name, *spec.default_value);
   }
   given = out;
+  if (problems.empty())
+    for (const auto& rule : schema.rules())
+      if (auto problem = rule.check(given)) problems.push_back(*problem);
   return problems;
 }
 

@@ -3,6 +3,7 @@
 /// law and solver declares its keys with type, default, range, units and a one-line doc.
 /// The same schema validates input, formats error messages and generates the docs.
 
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -55,35 +56,6 @@ struct ParamSpec {
   std::string summary() const;
 };
 
-/// The ordered list of keys a named object accepts.
-class ParamSchema {
-public:
-  ParamSchema() = default;
-  ParamSchema(std::string name, std::string doc) : name_(std::move(name)), doc_(std::move(doc)) {}
-
-  const std::string& name() const { return name_; }
-  const std::string& doc() const { return doc_; }
-  const std::vector<ParamSpec>& specs() const { return specs_; }
-  std::vector<std::string> keys() const;
-  const ParamSpec* find(const std::string& key) const;
-
-  ParamSpec& real(const std::string& key, const std::string& units, const std::string& doc);
-  ParamSpec& integer(const std::string& key, const std::string& doc);
-  ParamSpec& boolean(const std::string& key, const std::string& doc);
-  ParamSpec& string(const std::string& key, const std::string& doc);
-
-  /// Human-readable description: name, doc, then one line per key.
-  std::string describe() const;
-  /// A Markdown table of the keys (docs are generated from this so they cannot drift).
-  std::string markdown_table() const;
-
-private:
-  ParamSpec& add(ParamSpec spec);
-  std::string name_;
-  std::string doc_;
-  std::vector<ParamSpec> specs_;
-};
-
 /// Validated parameter values by key. Typed getters throw bipot::Error on a missing key or
 /// wrong type (a programming error once validation passed).
 class ParameterSet {
@@ -107,8 +79,52 @@ struct ParamProblem {
   std::string message;
 };
 
+/// The ordered list of keys a named object accepts.
+class ParamSchema {
+public:
+  ParamSchema() = default;
+  ParamSchema(std::string name, std::string doc) : name_(std::move(name)), doc_(std::move(doc)) {}
+
+  const std::string& name() const { return name_; }
+  const std::string& doc() const { return doc_; }
+  const std::vector<ParamSpec>& specs() const { return specs_; }
+  std::vector<std::string> keys() const;
+  const ParamSpec* find(const std::string& key) const;
+
+  ParamSpec& real(const std::string& key, const std::string& units, const std::string& doc);
+  ParamSpec& integer(const std::string& key, const std::string& doc);
+  ParamSpec& boolean(const std::string& key, const std::string& doc);
+  ParamSpec& string(const std::string& key, const std::string& doc);
+
+  /// A rule between keys (e.g. a preconditioner that needs a given method): `check` gets the
+  /// values once every key is valid and defaults are filled in, and returns the problem, if
+  /// any, with the key it concerns. `text` states the rule for describe() and the docs. So the
+  /// rule is checked wherever the schema is: by the input reader (`bipot check`, located at
+  /// the key) and by validate_or_throw() in the constructor of what it configures.
+  struct Rule {
+    std::string text;
+    std::function<std::optional<ParamProblem>(const ParameterSet&)> check;
+  };
+  void rule(std::string text,
+            std::function<std::optional<ParamProblem>(const ParameterSet&)> check);
+  const std::vector<Rule>& rules() const { return rules_; }
+
+  /// Human-readable description: name, doc, then one line per key.
+  std::string describe() const;
+  /// A Markdown table of the keys (docs are generated from this so they cannot drift).
+  std::string markdown_table() const;
+
+private:
+  ParamSpec& add(ParamSpec spec);
+  std::string name_;
+  std::string doc_;
+  std::vector<ParamSpec> specs_;
+  std::vector<Rule> rules_;
+};
+
 /// Checks `given` against `schema` (unknown keys with the nearest valid one, missing required
-/// keys with their doc, wrong types, out-of-range values) and fills in defaults.
+/// keys with their doc, wrong types, out-of-range values) and fills in defaults; when all
+/// keys are valid, the schema's rules between keys.
 /// An integer given where a real is expected is accepted and converted.
 std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& given);
 
