@@ -2,10 +2,14 @@
 
 #include "fem/core/error.hpp"
 #include "fem/input/condition_checks.hpp"
+#include "fem/input/increment_checks.hpp"
 #include "fem/input/mesh_checks.hpp"
 #include "fem/input/rigid_body_checks.hpp"
 
+#include "fem/linalg/communicator.hpp"
+
 #include <algorithm>
+#include <iostream>
 
 namespace bipot::app {
 
@@ -40,6 +44,12 @@ Model checked_model(const ProblemSpec& spec) {
   }
   if (!problems.empty()) throw InputError(problems);
   return model;
+}
+
+void print_model_warnings(const Model& model, const std::string& program) {
+  if (mpi_rank() != 0) return;
+  for (const auto& line : large_increment_warnings(model.spec, model.mesh))
+    std::cerr << program << ": warning: " << line << "\n";
 }
 
 } // namespace bipot::app

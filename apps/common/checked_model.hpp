@@ -14,4 +14,9 @@ namespace bipot::app {
 /// Throws InputError listing every problem found.
 Model checked_model(const ProblemSpec& spec);
 
+/// What a run survives but is probably not what was meant (large_increment_warnings: a
+/// prescribed step larger than the model), printed by `check` and by `run` before it solves:
+/// on rank 0, to stderr, one line each, "<program>: warning: file:line:col: key.path: ...".
+void print_model_warnings(const Model& model, const std::string& program);
+
 } // namespace bipot::app
