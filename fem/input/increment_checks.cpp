@@ -4,9 +4,11 @@
 #include "fem/input/detail/sections.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace bipot {
 
@@ -60,7 +62,8 @@ std::vector<std::string> large_increment_warnings(const ProblemSpec& spec, const
           " m (its bounding-box diagonal): small-strain kinematics cannot describe such a step; "
           "check the value's units, or use more increments");
     }
-    previous = stage.reset_displacements ? decltype(current){} : current;
+    if (stage.reset_displacements) current.clear(); // the next stage starts from 0
+    previous = std::move(current);
   }
   return warnings;
 }
