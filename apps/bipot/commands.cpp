@@ -20,7 +20,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <optional>
 
 namespace bipot::app {
 
@@ -82,28 +81,13 @@ int check_command(const std::vector<std::string>& args) {
   const std::string file = one_file(args, "bipot check FILE.yaml");
   if (file.empty()) return 1;
   return guarded([&] {
-    const ProblemSpec spec = read_problem_file(file);
-    // Every problem `run` would stop at before solving: the model's, and the results folder's
-    // (the same check as RunFolder's), reported together.
-    std::vector<std::string> problems;
-    std::optional<Model> model;
-    try {
-      model.emplace(checked_model(spec));
-    } catch (const InputError& e) {
-      problems = e.problems();
-    }
-    const std::string output = results_folder_problem(spec.output.directory);
-    if (!output.empty())
-      problems.push_back((spec.output.where.empty() ? spec.file + ": output.directory (default '" +
-                                                          spec.output.directory + "')"
-                                                    : spec.output.where) +
-                         ": cannot write the results: " + output);
-    if (!problems.empty()) throw InputError(problems);
-    print_model_warnings(*model, "bipot");
+    // Every problem `run` would stop at before solving: the model's and the results folder's.
+    const Model model = checked_model_and_results_folder(read_problem_file(file));
+    print_model_warnings(model, "bipot");
     if (root())
-      std::cout << file << ": ok (" << model->mesh.num_nodes() << " nodes, "
-                << model->mesh.num_cells() << " cells, " << spec.stages.size() << " stage"
-                << (spec.stages.size() == 1 ? "" : "s") << ")\n";
+      std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
+                << model.mesh.num_cells() << " cells, " << model.spec.stages.size() << " stage"
+                << (model.spec.stages.size() == 1 ? "" : "s") << ")\n";
     return 0;
   });
 }

@@ -1,4 +1,5 @@
 #include "apps/common/checked_model.hpp"
+#include "apps/common/run_folder.hpp"
 
 #include "fem/core/error.hpp"
 #include "fem/input/condition_checks.hpp"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <optional>
 
 namespace bipot::app {
 
@@ -44,6 +46,24 @@ Model checked_model(const ProblemSpec& spec) {
   }
   if (!problems.empty()) throw InputError(problems);
   return model;
+}
+
+Model checked_model_and_results_folder(const ProblemSpec& spec) {
+  std::vector<std::string> problems;
+  std::optional<Model> model;
+  try {
+    model.emplace(checked_model(spec));
+  } catch (const InputError& e) {
+    problems = e.problems();
+  }
+  const std::string output = results_folder_problem(spec.output.directory);
+  if (!output.empty())
+    problems.push_back((spec.output.where.empty() ? spec.file + ": output.directory (default '" +
+                                                        spec.output.directory + "')"
+                                                  : spec.output.where) +
+                       ": cannot write the results: " + output);
+  if (!problems.empty()) throw InputError(problems);
+  return std::move(*model);
 }
 
 void print_model_warnings(const Model& model, const std::string& program) {
