@@ -11,7 +11,7 @@ function(bipot_add_library name)
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/bipot>)
   target_compile_features(bipot_${name} PUBLIC cxx_std_17)
-  target_compile_options(bipot_${name} PRIVATE -Wall -Wextra)
+  target_compile_options(bipot_${name} PRIVATE ${BIPOT_WARNINGS})
   target_link_libraries(bipot_${name} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
   install(TARGETS bipot_${name} EXPORT bipotTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -28,7 +28,7 @@ endfunction()
 function(bipot_add_test name)
   cmake_parse_arguments(ARG "MPI_MAIN" "" "SOURCES;LIBS;RANKS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
-  target_compile_options(${name} PRIVATE -Wall -Wextra)
+  target_compile_options(${name} PRIVATE ${BIPOT_WARNINGS})
   if(ARG_MPI_MAIN)
     target_link_libraries(${name} PRIVATE ${ARG_LIBS} bipot_test_mpi_main GTest::gtest)
   else()

@@ -2,7 +2,9 @@
 # Installs the Debian packages bipot needs (only those missing), then configures and builds
 # Release into build/. Idempotent: a second run only rebuilds what changed.
 # Usage: scripts/setup.sh [--packages-only]
-#   (BUILD_DIR, BUILD_TYPE, JOBS and BIPOT_SANITIZE may be set in the environment)
+#   (BUILD_DIR, BUILD_TYPE, JOBS, BIPOT_SANITIZE and BIPOT_WERROR=ON|OFF may be set in the
+#   environment; BIPOT_WERROR=ON, as CI sets it, makes warnings in bipot's code errors;
+#   BUILD_TARGETS="a b" builds only those targets; EXTRA_PACKAGES="p q" installs more packages)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${BUILD_DIR:-$root/build}"
@@ -24,6 +26,8 @@ packages=(
   libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
 )
+read -r -a extra <<< "${EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -41,9 +45,10 @@ fi
 if [ "${1:-}" = "--packages-only" ]; then exit 0; fi
 
 mkdir -p "$build_dir"
-cmake_args=(-DCMAKE_BUILD_TYPE="$build_type")
+cmake_args=(-DCMAKE_BUILD_TYPE="$build_type" -DBIPOT_WERROR="${BIPOT_WERROR:-OFF}")
 [ -z "${BIPOT_SANITIZE:-}" ] || cmake_args+=(-DBIPOT_SANITIZE="$BIPOT_SANITIZE")
 cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" > "$build_dir/configure.log" 2>&1 \
   || { cat "$build_dir/configure.log" >&2; exit 1; }
 echo "setup: building in $build_dir with $jobs jobs"
-cmake --build "$build_dir" -j "$jobs"
+read -r -a targets <<< "${BUILD_TARGETS:-}"
+cmake --build "$build_dir" -j "$jobs" ${targets[@]:+--target "${targets[@]}"}

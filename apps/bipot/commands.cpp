@@ -72,14 +72,18 @@ int check_command(const std::vector<std::string>& args) {
     if (root())
       std::cout << "bipot check FILE.yaml\n  Reads FILE.yaml, builds its mesh and materials, "
                    "checks the mesh (non-finite\n  coordinates, inverted cells, coincident or "
-                   "unused nodes) and that every stage holds\n  every body, and reports every "
-                   "problem as file:line:col: key.path: message.\n";
+                   "unused nodes), that every stage holds\n  every body and that the results "
+                   "folder can be written, and reports every problem\n  as file:line:col: "
+                   "key.path: message. Warns (exit code 0) of a prescribed displacement\n  step "
+                   "larger than the model.\n";
     return 0;
   }
   const std::string file = one_file(args, "bipot check FILE.yaml");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = checked_model(read_problem_file(file));
+    // Every problem `run` would stop at before solving: the model's and the results folder's.
+    const Model model = checked_model_and_results_folder(read_problem_file(file));
+    print_model_warnings(model, "bipot");
     if (root())
       std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
                 << model.mesh.num_cells() << " cells, " << model.spec.stages.size() << " stage"
@@ -121,6 +125,7 @@ int run_command(const std::vector<std::string>& args) {
   if (file.empty()) return 1;
   return guarded([&] {
     const Model model = checked_model(read_problem_file(file));
+    print_model_warnings(model, "bipot");
     RunFolder folder(output.empty() ? model.spec.output.directory : output, model.spec, "bipot");
     RunSummary summary;
     {

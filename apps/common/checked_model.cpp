@@ -1,11 +1,17 @@
 #include "apps/common/checked_model.hpp"
+#include "apps/common/run_folder.hpp"
 
 #include "fem/core/error.hpp"
 #include "fem/input/condition_checks.hpp"
+#include "fem/input/increment_checks.hpp"
 #include "fem/input/mesh_checks.hpp"
 #include "fem/input/rigid_body_checks.hpp"
 
+#include "fem/linalg/communicator.hpp"
+
 #include <algorithm>
+#include <iostream>
+#include <optional>
 
 namespace bipot::app {
 
@@ -72,6 +78,30 @@ Model checked_model(const ProblemSpec& spec) {
   }
   if (!problems.empty()) throw InputError(problems);
   return model;
+}
+
+Model checked_model_and_results_folder(const ProblemSpec& spec) {
+  std::vector<std::string> problems;
+  std::optional<Model> model;
+  try {
+    model.emplace(checked_model(spec));
+  } catch (const InputError& e) {
+    problems = e.problems();
+  }
+  const std::string output = results_folder_problem(spec.output.directory);
+  if (!output.empty())
+    problems.push_back((spec.output.where.empty() ? spec.file + ": output.directory (default '" +
+                                                        spec.output.directory + "')"
+                                                  : spec.output.where) +
+                       ": cannot write the results: " + output);
+  if (!problems.empty()) throw InputError(problems);
+  return std::move(*model);
+}
+
+void print_model_warnings(const Model& model, const std::string& program) {
+  if (mpi_rank() != 0) return;
+  for (const auto& line : large_increment_warnings(model.spec, model.mesh))
+    std::cerr << program << ": warning: " << line << "\n";
 }
 
 } // namespace bipot::app

@@ -14,4 +14,14 @@ namespace bipot::app {
 /// Throws InputError listing every problem found.
 Model checked_model(const ProblemSpec& spec);
 
+/// What `check` verifies: checked_model(spec) and that the results could be written into
+/// spec.output.directory (results_folder_problem, the check a run makes before solving,
+/// reported at output.directory). Throws InputError listing every problem of both.
+Model checked_model_and_results_folder(const ProblemSpec& spec);
+
+/// What a run survives but is probably not what was meant (large_increment_warnings: a
+/// prescribed step larger than the model), printed by `check` and by `run` before it solves:
+/// on rank 0, to stderr, one line each, "<program>: warning: file:line:col: key.path: ...".
+void print_model_warnings(const Model& model, const std::string& program);
+
 } // namespace bipot::app

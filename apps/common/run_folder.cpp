@@ -103,9 +103,12 @@ std::string foreign(const fs::path& folder) {
          "remove it or choose another output directory";
 }
 
-// Rank 0: checks the target and creates the working folder; returns the problem, or "".
-std::string open_working_folder(OpenRun& run) {
-  const fs::path target = run.target;
+} // namespace
+
+std::string results_folder_problem(const std::string& directory) {
+  fs::path target = fs::path(directory).lexically_normal();
+  if (!target.has_filename() && target.has_parent_path())
+    target = target.parent_path(); // "results/" names the folder results
   if (!target.has_filename() || target.filename() == "." || target.filename() == "..")
     return "'" + target.string() + "' cannot be a results folder (name it, e.g. results/run)";
   std::error_code ec;
@@ -118,9 +121,35 @@ std::string open_working_folder(OpenRun& run) {
     const std::string problem = foreign(folder);
     if (!problem.empty()) return problem;
   }
+  // The parent folders a run would create: the nearest that exists must be a folder this
+  // process may create entries in.
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (fs::exists(parent, ec) && !fs::is_directory(parent, ec))
-    return "cannot create '" + parent.string() + "' (a file of that name exists)";
+  fs::path existing = parent;
+  while (!fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing.parent_path() != existing)
+    existing = existing.parent_path();
+  if (!fs::exists(existing, ec)) existing = ".";
+  if (!fs::is_directory(existing, ec))
+    return "cannot create '" + parent.string() + "' (" +
+           (existing == parent ? std::string("a file of that name exists")
+                               : "'" + existing.string() + "' is a file") +
+           ")";
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    return "cannot create '" + (existing == parent ? target : parent).string() + "' in '" +
+           existing.string() + "': " + std::strerror(errno);
+  return "";
+}
+
+namespace {
+
+// Rank 0: checks the target (results_folder_problem) and creates the working folder; returns
+// the problem, or "".
+std::string open_working_folder(OpenRun& run) {
+  const fs::path target = run.target;
+  std::string problem = results_folder_problem(target.string());
+  if (!problem.empty()) return problem;
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec) return "cannot create '" + parent.string() + "': " + ec.message();
   run.working = fs::path(target.string() + ".running-" + std::to_string(::getpid()));

@@ -40,6 +40,13 @@ private:
   std::string directory_, working_;
 };
 
+/// Why a run could not write its results into `directory`, or "": the checks RunFolder's
+/// constructor makes before it creates anything — a named folder that does not contain the
+/// current directory, missing or empty or holding an earlier run's results (so does
+/// `<directory>.failed`), whose nearest existing parent is a folder this process may write
+/// into. `bipot check` reports the same problem at `output.directory`.
+std::string results_folder_problem(const std::string& directory);
+
 /// The error handling's side of RunFolder: if a run folder is open on this rank, writes
 /// status `failed` (the increment after the last converged one, and `message`) into it, and
 /// when `details` is not empty (the whole residual history of IncrementFailure) writes

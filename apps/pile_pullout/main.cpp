@@ -173,8 +173,8 @@ int main(int argc, char** argv) {
   }
   if (command == "check")
     return guarded([&] {
-      const bipot::Model model =
-          app::checked_model(bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
+      const bipot::Model model = app::checked_model_and_results_folder(
+          bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
       if (root)
         std::cout << files[0] << ": ok (" << model.mesh.num_nodes() << " nodes, "
                   << model.mesh.num_cells() << " cells)\n";

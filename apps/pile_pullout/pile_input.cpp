@@ -208,7 +208,7 @@ void read_output(const YamlMap& top, PileSpec& spec) {
   if (!top.has("output")) return;
   YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every", "profiles_at"});
   if (!m.valid()) return;
-  m.string("directory", spec.output.directory);
+  if (m.string("directory", spec.output.directory)) spec.output.where = m.where("directory");
   m.boolean("vtk", spec.output.vtk);
   if (m.integer("every", spec.output.every) && spec.output.every < 1)
     m.error("every", "value " + std::to_string(spec.output.every) + " is out of range [1, inf)");

@@ -216,8 +216,9 @@ std::string ParamSchema::markdown_table() const {
                       : (s.default_value ? format_value(*s.default_value) : std::string("-")))
        << " | " << range << " | " << s.units << " | " << s.doc << " |\n";
   }
+  if (!rules_.empty()) os << "\nRules between keys:\n";
   for (const auto& r : rules_)
-    os << "\nRule: " << r.doc << "\n";
+    os << "- " << r.doc << "\n";
   return os.str();
 }
 

@@ -179,6 +179,8 @@ struct OutputSpec {
   std::string directory = "results";
   bool vtk = true;
   int every = 1; ///< write VTK every n-th converged increment (and always the last of a stage)
+  /// "file:line:col: output.directory" when the input gives it, "" otherwise
+  std::string where;
 };
 
 struct ProblemSpec {

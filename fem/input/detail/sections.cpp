@@ -376,7 +376,7 @@ OutputSpec read_output(const YamlMap& top) {
   OutputSpec out;
   YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every"});
   if (!m.valid()) return out;
-  m.string("directory", out.directory);
+  if (m.string("directory", out.directory)) out.where = m.where("directory");
   m.boolean("vtk", out.vtk);
   if (m.integer("every", out.every) && out.every < 1)
     m.error("every", "value " + std::to_string(out.every) + " is out of range [1, inf)");

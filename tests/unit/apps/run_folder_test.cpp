@@ -167,6 +167,29 @@ TEST(RunFolder, ReportsAFolderThatCannotBeCreatedBeforeTheRun) {
   }
 }
 
+// What `bipot check` reports at output.directory: the constructor's refusals, found without
+// creating anything (the same function decides both).
+TEST(RunFolder, ProblemsAreFoundWithoutCreatingAnything) {
+  ScratchDir dir("run_folder");
+  write(dir.path / "a_file", "");
+  EXPECT_EQ(results_folder_problem((dir.path / "new" / "deeper" / "results").string()), "");
+  EXPECT_EQ(results_folder_problem((dir.path / "a_file" / "results").string()),
+            "cannot create '" + (dir.path / "a_file").string() + "' (a file of that name exists)");
+  EXPECT_EQ(results_folder_problem((dir.path / "a_file" / "sub" / "results").string()),
+            "cannot create '" + (dir.path / "a_file" / "sub").string() + "' ('" +
+                (dir.path / "a_file").string() + "' is a file)");
+  fs::create_directory(dir.path / "my_notes");
+  write(dir.path / "my_notes" / "notes.txt", "precious");
+  EXPECT_NE(results_folder_problem((dir.path / "my_notes").string())
+                .find("holds files that no bipot run wrote"),
+            std::string::npos);
+  EXPECT_NE(results_folder_problem(".").find("cannot be a results folder"), std::string::npos);
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path))
+    ++entries;
+  EXPECT_EQ(entries, 2); // a_file and my_notes: nothing was created
+}
+
 TEST(RunFolder, RefusesTheCurrentDirectory) {
   for (const char* out : {".", "./", ".."})
     EXPECT_THROW(RunFolder(out, two_stages(), "test"), Error) << out;

@@ -1,3 +1,4 @@
+#include "fem/core/error.hpp"
 #include "fem/core/parameter_schema.hpp"
 #include "fem/core/registry.hpp"
 
@@ -83,8 +84,50 @@ TEST(ParamSchema, RulesAndOptionalKeys) {
   problems = validate(s, q);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].key, "high");
-  EXPECT_NE(s.markdown_table().find("\nRule: low <= high\n"), std::string::npos);
+  EXPECT_NE(s.markdown_table().find("\nRules between keys:\n- low <= high\n"), std::string::npos);
   EXPECT_EQ(s.find("extra")->summary(), "real, optional: absent means none");
+}
+
+// A rule between keys runs once every key is valid, with the defaults filled in; its problem
+// names the key it concerns, validate_or_throw() prefixes the schema, describe() and the docs
+// table state it.
+TEST(ParamSchema, RulesBetweenKeys) {
+  ParamSchema s = sample_schema();
+  s.rule({"count", "count 1 needs method gmres",
+          [](const ParameterSet& p) -> std::optional<std::string> {
+            if (p.integer("count") != 1 || p.string("method") == "gmres") return std::nullopt;
+            return "count 1 needs method 'gmres', got '" + p.string("method") + "'";
+          }});
+  ParameterSet p;
+  p.set("stiffness", 1.0);
+  p.set("count", 1L);
+  auto problems = validate(s, p); // method defaults to cg
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "count");
+  EXPECT_EQ(problems[0].message, "count 1 needs method 'gmres', got 'cg'");
+  ParameterSet q;
+  q.set("stiffness", 1.0);
+  q.set("count", 1L);
+  q.set("method", std::string("gmres"));
+  EXPECT_TRUE(validate(s, q).empty());
+  ParameterSet bad; // a missing key: the rule would read it, so it does not run
+  bad.set("count", 1L);
+  problems = validate(s, bad);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "stiffness");
+  ParameterSet r;
+  r.set("stiffness", 1.0);
+  r.set("count", 1L);
+  try {
+    validate_or_throw(s, r);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_EQ(e.problems()[0], "sample.count: count 1 needs method 'gmres', got 'cg'");
+  }
+  EXPECT_NE(s.describe().find("\n  rule: count 1 needs method gmres\n"), std::string::npos);
+  EXPECT_NE(s.markdown_table().find("\nRules between keys:\n- count 1 needs method gmres\n"),
+            std::string::npos);
 }
 
 TEST(ParamSchema, OpenAndClosedBounds) {

@@ -148,6 +148,22 @@ TEST(ProblemReader, LinearSolverOptionsAreValidated) {
   EXPECT_TRUE(has(p, "linear_solver.tolerance: value -1 is out of range"));
 }
 
+// A rule between keys of the linear solver's schema is found while reading (`bipot check`), at
+// the key it concerns, not only when `run` constructs the solver; valid pairs pass.
+TEST(ProblemReader, LinearSolverRulesAreFoundAtTheKey) {
+  const auto p = problems_of(good + "linear_solver: {method: cg, preconditioner: lu}\n");
+  EXPECT_TRUE(has(p, "in.yaml:16:29: linear_solver.preconditioner: preconditioner 'lu' needs "
+                     "method 'gmres', got method 'cg'"));
+  const auto q = problems_of(good + "linear_solver: {preconditioner: lu}\n"); // default cg
+  EXPECT_TRUE(has(q, "in.yaml:16:17: linear_solver.preconditioner: preconditioner 'lu' needs "
+                     "method 'gmres', got method 'cg'"));
+  EXPECT_TRUE(problems_of(good + "linear_solver: {method: gmres, preconditioner: lu}\n").empty());
+  // Only once every key is valid: a bad method is reported alone.
+  const auto r = problems_of(good + "linear_solver: {method: bicg, preconditioner: lu}\n");
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_TRUE(has(r, "linear_solver.method: value \"bicg\" is not one of"));
+}
+
 } // namespace
 } // namespace bipot
 
