@@ -28,7 +28,8 @@ const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
       {"interfaces", "list of {name, between: [body1, body2] | facet_sets: [a, b], law, "
                      "parameters, initial_gap}"},
       {"contact_solver", "type: semismooth_newton | bipotential_uzawa, and its options"},
-      {"stages", "list of load stages: name, increments, boundary_conditions, loads"},
+      {"stages", "list of load stages: name, increments, boundary_conditions, loads, "
+                 "interface_gaps, interfaces (law changes), control"},
       {"output", "directory, vtk, every"},
   };
   return keys;
@@ -76,7 +77,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
     validate(contact::contact_solvers().schema(spec.contact_solver.type),
              spec.contact_solver.parameters);
   if (top.has("stages"))
-    spec.stages = input::read_stages(top, spec.kinematics);
+    spec.stages = input::read_stages(top, spec.kinematics, spec.interfaces);
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);

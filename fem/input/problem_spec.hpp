@@ -90,6 +90,16 @@ struct ControlSpec {
   bool path_following() const { return type != "ramp"; }
 };
 
+/// A stage's change of an interface's law or parameters (`interfaces: {name: {law, parameters}}`
+/// in the stage), resolved when read: `law` and `parameters` are the complete set in force
+/// from this stage on (parameters given without a new law are merged over those in force).
+struct InterfaceLawChangeSpec {
+  std::string interface;
+  std::string law;
+  ParameterSet parameters; ///< validated against the law's schema, defaults filled in
+  std::string where;
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -100,6 +110,7 @@ struct StageSpec {
   std::vector<DirichletSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
   std::vector<InterfaceGapSpec> interface_gaps;
+  std::vector<InterfaceLawChangeSpec> interface_laws;
   ControlSpec control;
   std::string where;
 };

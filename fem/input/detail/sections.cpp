@@ -169,8 +169,8 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
 
 ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
                                   Diagnostics& diag, const ParamSchema& schema,
-                                  const std::vector<std::string>& skip) {
-  ParameterSet params;
+                                  const std::vector<std::string>& skip, const ParameterSet* base) {
+  ParameterSet params = base ? *base : ParameterSet{};
   if (!node.IsMap()) {
     diag.error(node, path, "expected a map of parameters, got " + describe_node(node));
     return params;

@@ -146,17 +146,22 @@ void read_control(const YamlMap& m, StageSpec& st) {
 
 } // namespace
 
-std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics) {
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics,
+                                   const std::vector<InterfaceSpec>& interfaces) {
   std::vector<StageSpec> out;
   const std::string expected = "expected a non-empty list of stages";
   if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries = list_entries(top, "stages",
-                                    {"name", "increments", "duration", "reset_displacements",
-                                     "boundary_conditions", "loads", "interface_gaps", "control"},
-                                    expected);
+  const auto entries =
+      list_entries(top, "stages",
+                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+                    "loads", "interface_gaps", "interfaces", "control"},
+                   expected);
+  std::vector<InterfaceLawChangeSpec> active;
+  for (const InterfaceSpec& f : interfaces)
+    active.push_back({f.name, f.law, f.parameters, f.where});
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -173,6 +178,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    if (m.has("interfaces")) read_stage_interfaces(m, interfaces, active, st);
     if (m.has("control")) read_control(m, st);
     out.push_back(std::move(st));
   }
