@@ -42,6 +42,10 @@ struct Interface {
   double initial_gap = 0; ///< m, added to g_n
 };
 
+/// Whether the interface's bodies share its nodes (every pair has node_a == node_b): built
+/// with tie_only, for an interface bonded in every stage.
+bool shares_nodes(const Interface& iface);
+
 /// Builds the interfaces `defs` (in that order) on `mesh`, splitting it where needed.
 ///
 /// Region mode ("between: [a, b]"): the facets shared by a region-a and a region-b cell are

@@ -17,6 +17,7 @@
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace bipot {
@@ -52,13 +53,20 @@ const char* to_string(PairStatus status);
 
 class InterfaceAssembler {
 public:
-  /// `law` is not owned. Pairs with node_a == node_b (perfect bonding) are not assembled.
+  /// `law` is not owned. An interface whose bodies share its nodes (perfect bonding in every
+  /// stage) is not assembled; a tied law on split pairs holds their jumps (evaluate_tie()).
   InterfaceAssembler(const Interface& iface, const InterfaceLaw& law, const DofMap& dofs,
                      const DofDistribution& dist);
 
   const Interface& interface() const { return iface_; }
-  const InterfaceLaw& law() const { return law_; }
-  bool tied() const { return law_.is_tied(); }
+  const InterfaceLaw& law() const { return *law_; }
+  /// Tied by shared nodes: nothing to evaluate or assemble (forces from set_tied_forces()).
+  bool tied() const { return law_->is_tied() && shared_nodes_; }
+  /// Puts `law` (not owned) in force from the next increment on (a stage's law change). The
+  /// committed state carries over (docs/theory.md): jumps, slips and multipliers r̂ (a
+  /// predictor for the new law) as they are; β becomes min(β, the new law's β0), and 1 under
+  /// a tied law, which holds each pair's jump where it is.
+  void set_law(const InterfaceLaw& law);
   std::size_t num_pairs() const { return iface_.pairs.size(); }
 
   /// Adds the [a, b] DOF block of every owned pair.
@@ -139,9 +147,10 @@ private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
 
   const Interface& iface_;
-  const InterfaceLaw& law_;
+  const InterfaceLaw* law_;
   const DofMap& dofs_;
   int dim_;
+  bool shared_nodes_ = false;
   std::vector<bool> owned_;
   std::vector<double> rho_;
   std::vector<InterfaceState> committed_;
@@ -155,7 +164,7 @@ private:
   double multiplier_change_ = 0;
   double roundoff_force_ = 0;
   double gap_shift_ = 0;
-  FrozenAdhesion frozen_law_;
+  std::optional<FrozenAdhesion> frozen_law_;
   bool frozen_ = false;
   std::vector<double> frozen_beta_;
   bool tangent_changed_ = true;

@@ -39,7 +39,8 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
     for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
       // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
       // needs body 1 as a region: not for tied facet-set interfaces.
-      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2)
+      if (contact::shares_nodes(model.interfaces[k]) &&
+          model.spec.interfaces[k].between.size() != 2)
         continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);
@@ -97,8 +98,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
   if (reactions_) reactions_->write_row(row);
-  const bool due =
-      report.global_step % model_.spec.output.every == 0 || report.stage_end;
+  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;

@@ -70,6 +70,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         if (gap.interface == model.interfaces[k].name) gap_target[k] = gap.value;
     }
 
+    // Laws the stage puts in force (the state carries over: InterfaceAssembler::set_law); ρ
+    // follows the new laws' stiffness.
+    bool law_changed = false;
+    for (const auto& sl : model.stage_laws)
+      if (sl.stage == s) interfaces[sl.interface]->set_law(*sl.law), law_changed = true;
+    if (law_changed && has_contact) {
+      choose_augmentation();
+      schur_ready = false; // K was overwritten by the unconstrained bulk matrix
+    }
+
     const double planned = 1.0 / stage.increments;
     double done = 0.0, last_size = 0.0; // last_size: of the last converged increment
     std::vector<double> u_before_last;  // u at the start of the last converged increment
@@ -158,7 +168,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           // repeat the failed solve.
           beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
             const std::vector<double> beta = ia->committed_adhesion();
-            return !ia->tied() &&
+            return !ia->law().is_tied() &&
                    std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
           });
           if (has_contact && beta_can_change) {
