@@ -16,6 +16,7 @@
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/state_arrays.hpp"
 
 #include <optional>
 #include <vector>
@@ -123,6 +124,15 @@ public:
   /// expansion of a pile shaft at installation. Kept through displacement resets.
   void set_gap_shift(double shift) { gap_shift_ = shift; }
   double gap_shift() const { return gap_shift_; }
+
+  /// The committed state for a checkpoint (interface_state.cpp; every rank holds every pair):
+  /// per pair β, jump, r, the r of the increment before, the multipliers, the offsets kept
+  /// through displacement resets and ρ; the gap shift. The law in force is not in it (a
+  /// stage's `interfaces:` gives it).
+  StateArrays save_state() const;
+  /// Restores save_state()'s arrays; the last evaluation becomes the committed state. Throws
+  /// bipot::Error naming the interface if an array is missing or sized for other pairs.
+  void load_state(const StateArrays& state);
 
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }

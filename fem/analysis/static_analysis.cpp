@@ -40,15 +40,15 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   const auto run_start = std::chrono::steady_clock::now();
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
+  summary.steps = start_steps; // a restart numbers its increments on
   const int max_cutbacks = model.contact_solver.max_cutbacks;
-  double time = 0.0;
+  double time = start_time;
   // Interface resultants (per interface and component) of the last step and the largest
-  // magnitudes seen, for the snap-back flag.
-  std::vector<std::array<double, 3>> last_resultant(interfaces.size(), {0, 0, 0});
-  std::vector<std::array<double, 3>> largest_resultant(interfaces.size(), {0, 0, 0});
-  double largest_any = 0.0;
+  // magnitudes seen, for the snap-back flag (restored by a restart).
+  last_resultant.resize(interfaces.size(), {0, 0, 0});
+  largest_resultant.resize(interfaces.size(), {0, 0, 0});
 
-  for (std::size_t s = 0; s < model.spec.stages.size(); ++s) {
+  for (std::size_t s = first_stage; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
     target.clear();
     for (const auto& bc : stage.boundary_conditions)
@@ -61,6 +61,9 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     gravity_now = std::any_of(stage.loads.begin(), stage.loads.end(),
                               [](const LoadSpec& l) { return l.type == LoadSpec::Type::Gravity; });
     matrix_ready = false; // the constrained set may have changed
+    // A stage's first Newton matrix is factorised afresh (GMRES would otherwise start from the
+    // last stage's factors), so that a run restarted at a stage end takes the same steps.
+    newton_matrix.reset();
     // A gap shift not named by the stage keeps its value (it is a state, not a load).
     gap_start.resize(interfaces.size());
     gap_target.resize(interfaces.size());
@@ -301,6 +304,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         ia->absorb_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
+    if (options.on_stage_end) options.on_stage_end(s + 1, time);
   }
   summary.seconds = seconds_since(run_start);
   return summary;
@@ -320,6 +324,14 @@ StaticAnalysis::~StaticAnalysis() = default;
 
 RunSummary StaticAnalysis::run(const std::function<void(const StepReport&)>& on_step) {
   return impl_->run(on_step);
+}
+
+StateArrays StaticAnalysis::save_state(std::size_t stages_done, double time) const {
+  return impl_->save_state(stages_done, time);
+}
+
+void StaticAnalysis::load_state(const StateArrays& state) {
+  impl_->load_state(state);
 }
 
 const std::vector<double>& StaticAnalysis::displacement() const {

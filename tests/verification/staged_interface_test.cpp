@@ -9,6 +9,7 @@
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/block_stage.hpp"
 
 #include <gtest/gtest.h>
 
@@ -44,16 +45,7 @@ std::string block(const std::string& block_material, const std::string& law,
 const std::string stiff_block =
     "{type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.3}";
 
-// Bottom fixed, top moved to (x, y) at the end of the stage.
-std::string stage(const std::string& name, double x, double y, const std::string& extra = "") {
-  return "  - name: " + name + "\n    increments: 3\n" + extra +
-         "    boundary_conditions:\n"
-         "      - {set: bottom, component: x, value: 0}\n"
-         "      - {set: bottom, component: y, value: 0}\n"
-         "      - {set: top, component: x, value: " +
-         std::to_string(x) + "}\n      - {set: top, component: y, value: " + std::to_string(y) +
-         "}\n";
-}
+using test::block_stage;
 
 struct Result {
   std::vector<std::array<double, 3>> resultant; ///< interface force after each increment
@@ -88,9 +80,9 @@ double max_abs(const std::vector<double>& v, std::size_t n) {
 TEST(StagedInterface, FrictionCoefficientOfEachStageAtFullSliding) {
   const std::string coulomb = "coulomb_signorini\n    parameters: {friction_coefficient: 0.3}";
   const std::string stages =
-      stage("press", 0, -1e-3) + stage("shear", 4e-3, -1e-3) +
-      stage("shear_more", 8e-3, -1e-3,
-            "    interfaces: {joint: {parameters: {friction_coefficient: 0.5}}}\n");
+      block_stage("press", 0, -1e-3) + block_stage("shear", 4e-3, -1e-3) +
+      block_stage("shear_more", 8e-3, -1e-3,
+                  "    interfaces: {joint: {parameters: {friction_coefficient: 0.5}}}\n");
   const Result r = run(block(stiff_block, coulomb, stages));
   ASSERT_EQ(r.resultant.size(), 9u);
   // The last increment of each shear stage slides: |F_t| = μ F_n (F_n > 0, compression).
@@ -102,11 +94,11 @@ TEST(StagedInterface, FrictionCoefficientOfEachStageAtFullSliding) {
 }
 
 TEST(StagedInterface, BondedStageOnSplitPairsEqualsSharedNodes) {
-  const std::string press = stage("press", 1e-3, -1e-3);
-  const std::string later =
-      stage("shear", 4e-3, -1e-3,
-            "    interfaces: {joint: {law: coulomb_signorini, parameters: {friction_coefficient: "
-            "0.3}}}\n");
+  const std::string press = block_stage("press", 1e-3, -1e-3);
+  const std::string later = block_stage(
+      "shear", 4e-3, -1e-3,
+      "    interfaces: {joint: {law: coulomb_signorini, parameters: {friction_coefficient: "
+      "0.3}}}\n");
   const Result split = run(block(stiff_block, "perfect_bonding", press + later));
   const Result shared = run(block(stiff_block, "perfect_bonding", press));
   ASSERT_EQ(split.u.size(), 6u);
