@@ -89,6 +89,19 @@ std::string ResultWriter::pvd_path() const {
   return directory_ + "/solution.pvd";
 }
 
+void ResultWriter::resume(const std::string& directory, std::size_t stages_done, double time) {
+  const auto last = static_cast<double>(stages_done);
+  const auto file_name = [](const std::string& path) {
+    return path.substr(path.find_last_of('/') + 1);
+  };
+  if (reactions_) reactions_->copy_rows(directory + "/" + file_name(reactions_->path()), last);
+  for (const auto& csv : interface_csv_)
+    csv->copy_rows(directory + "/" + file_name(csv->path()), last);
+  if (vtk_) vtk_->resume(directory, time);
+  for (const auto& vtk : interface_vtk_)
+    if (vtk) vtk->resume(directory, time);
+}
+
 void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& analysis) {
   std::vector<double> row = {static_cast<double>(report.stage_index + 1),
                              static_cast<double>(report.step), report.time, report.load_factor};

@@ -140,6 +140,10 @@ struct OutputSpec {
   std::string directory = "results";
   bool vtk = true;
   int every = 1; ///< write VTK every n-th converged increment (and always the last of a stage)
+  /// `checkpoint: {after: [stage names]}`: write `checkpoint_<stage>.bin` into the results at
+  /// the end of these stages (the complete state, for `bipot run --restart`).
+  std::vector<std::string> checkpoint_after;
+  std::string checkpoint_where;
 };
 
 struct ProblemSpec {

@@ -78,3 +78,18 @@ TEST(StageInterfaces, NewLawIsValidatedAgainstItsOwnSchema) {
 
 } // namespace
 } // namespace bipot
+
+namespace bipot {
+namespace {
+
+TEST(OutputCheckpoint, NamesStagesWithTheNearestOnATypo) {
+  const std::string text = two_stages("output: {checkpoint: {after: [a, bb]}}\n");
+  EXPECT_TRUE(has(problems_of(text), "in.yaml:19:30: output.checkpoint.after: no stage named "
+                                     "'bb' (did you mean 'b'?); stages: a, b"));
+  const ProblemSpec spec =
+      read_problem_text(two_stages("output: {checkpoint: {after: [b]}}\n"), "in.yaml");
+  EXPECT_EQ(spec.output.checkpoint_after, std::vector<std::string>{"b"});
+}
+
+} // namespace
+} // namespace bipot
