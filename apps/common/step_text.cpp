@@ -26,6 +26,8 @@ std::string step_flags(const StepReport& r) {
   if (r.cutbacks > 0) parts.push_back("1/" + std::to_string(1L << r.cutbacks) + " step");
   if (r.traced)
     parts.push_back("traced");
+  else if (r.requested_output && r.planned_step == 0)
+    parts.push_back("output level");
   else if (r.planned_step == 0)
     parts.push_back("sub-increment");
   if (r.staggered > 0)

@@ -54,7 +54,7 @@ public:
   virtual double stiffness_scale() const { return 0.0; }
 
   /// Energy per area (kJ/m²) that adhesion loss can still dissipate from intensity β (0 for
-  /// a law without adhesion): the scale of a dissipation-controlled step.
+  /// a law without adhesion), linear in β: what a dissipation-controlled step measures.
   virtual double adhesion_energy(double /*beta*/) const { return 0.0; }
 };
 

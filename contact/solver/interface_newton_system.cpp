@@ -123,35 +123,25 @@ double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) cons
   return worst;
 }
 
-Eigen::VectorXd InterfaceNewtonSystem::forces() const {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
-  for (const PairSlots& s : pairs_) {
-    const double A = s.iface->interface().pairs[s.pair].weight;
-    if (!(A > 0)) continue;
-    const PairResult& res = s.iface->results()[s.pair];
-    const Eigen::VectorXd force =
-        s.iface->frame(s.pair) * (A * s.iface->multipliers()[s.pair] + A * (res.traction - res.r));
-    f.segment(s.b, dim_) += force;
-    f.segment(s.a, dim_) -= force;
+double InterfaceNewtonSystem::released_adhesion_energy(Eigen::VectorXd* grad) const {
+  double released = 0;
+  for (InterfaceAssembler* ia : interfaces_) {
+    const double per_beta = ia->law().adhesion_energy(1.0) - ia->law().adhesion_energy(0.0);
+    if (per_beta == 0.0) continue;
+    const std::vector<double> committed = ia->committed_adhesion();
+    for (const PairSlots& s : pairs_) {
+      if (s.iface != ia) continue;
+      const double A = ia->interface().pairs[s.pair].weight;
+      released += A * per_beta * (committed[s.pair] - ia->results()[s.pair].beta);
+      if (!grad) continue;
+      // jump = Qᵀ(u_b − u_a): ∂β/∂x_b = Q ∂β/∂jump, ∂β/∂x_a its opposite.
+      const Eigen::VectorXd g =
+          -A * per_beta * (ia->frame(s.pair) * ia->derivatives(s.pair).dbeta_djump);
+      grad->segment(s.b, dim_) += g;
+      grad->segment(s.a, dim_) -= g;
+    }
   }
-  return f;
-}
-
-void InterfaceNewtonSystem::add_force_gradient(const Eigen::VectorXd& w,
-                                               Eigen::VectorXd& grad) const {
-  for (const PairSlots& s : pairs_) {
-    const double A = s.iface->interface().pairs[s.pair].weight;
-    if (!(A > 0)) continue;
-    const InterfaceResponseDerivatives& der = s.iface->derivatives(s.pair);
-    const Eigen::MatrixXd Q = s.iface->frame(s.pair);
-    // wᵀf = (w_b − w_a)ᵀ force_b, with the derivatives add() puts in J's force rows.
-    const Eigen::VectorXd wj = w.segment(s.b, dim_) - w.segment(s.a, dim_);
-    const Eigen::MatrixXd Kc = A * Q * (der.dt_djump - der.dr_djump) * Q.transpose();
-    const Eigen::VectorXd gx = Kc.transpose() * wj;
-    grad.segment(s.b, dim_) += gx;
-    grad.segment(s.a, dim_) -= gx;
-    grad.segment(s.multiplier, dim_) += Q.transpose() * wj;
-  }
+  return released;
 }
 
 } // namespace bipot::contact

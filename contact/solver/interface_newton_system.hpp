@@ -52,12 +52,11 @@ public:
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const;
 
-  /// f_c of the interfaces' last evaluate() on every DOF of I, prescribed ones included
-  /// (kN): +Q(λ + A a) on node b, its opposite on node a of every pair.
-  Eigen::VectorXd forces() const;
-  /// Adds ∂(wᵀ forces())/∂(x, λ) to grad.head(size()), w fixed (one value per DOF of I):
-  /// the row a path-following constraint that weighs the interface forces borders J with.
-  void add_force_gradient(const Eigen::VectorXd& w, Eigen::VectorXd& grad) const;
+  /// Σ_i A_i [E(β_i,committed) − E(β_i)], E = the law's adhesion_energy: the energy that
+  /// adhesion loss has released since the last converged increment, at the interfaces' last
+  /// evaluate() (kJ). With grad, adds its derivatives with respect to x (through β's
+  /// dependence on the jump): the row a dissipation-controlled step borders J with.
+  double released_adhesion_energy(Eigen::VectorXd* grad) const;
 
 private:
   struct PairSlots {

@@ -50,6 +50,9 @@ StateArrays StaticAnalysis::Impl::save_state(std::size_t stages_done, double tim
   for (std::size_t k = 0; k < interfaces.size(); ++k)
     for (auto& [name, values] : interfaces[k]->save_state())
       out["interface." + std::to_string(k) + "." + name] = std::move(values);
+  if (energy)
+    for (auto& [name, values] : energy->save_state())
+      out["energy." + name] = std::move(values);
   return out;
 }
 
@@ -83,6 +86,9 @@ void StaticAnalysis::Impl::load_state(const StateArrays& state) {
     if (sl.stage < stages_done) interfaces[sl.interface]->set_law(*sl.law);
   for (std::size_t k = 0; k < interfaces.size(); ++k)
     interfaces[k]->load_state(with_prefix(state, "interface." + std::to_string(k) + "."));
+  // The energy balance so far (energy.csv continues it).
+  energy = std::make_unique<EnergyLedger>(interfaces);
+  energy->load_state(with_prefix(state, "energy."));
   // The loads in force at the end of the last stage done (what the next one ramps from).
   assemble_loads(model.spec.stages[stages_done - 1], F_prev);
 }

@@ -7,8 +7,8 @@ namespace bipot {
 double PathStep::constraint(const contact::InterfaceNewtonSystem& sys, const Eigen::VectorXd& z,
                             Eigen::VectorXd* grad) const {
   const Index nI = sys.num_dofs(), n = sys.size();
-  if (grad) grad->setZero(n + 1);
   if (kind == Kind::ArcLength) {
+    if (grad) grad->setZero(n + 1);
     // Crisfield's cylindrical arc length: the interface displacements move by L; λ follows.
     // On a debonding snap-back the jumps keep growing while force and head displacement both
     // fall, so they parametrise the path where λ does not. Weighing λ in as well (a sphere)
@@ -18,17 +18,13 @@ double PathStep::constraint(const contact::InterfaceNewtonSystem& sys, const Eig
     if (grad && norm > 0) grad->head(nI) = z.head(nI) / norm;
     return norm - length;
   }
-  // Energy released by the interfaces over the step, seen as secant springs from their
-  // state at the start: ΔD = W − ΔE with W = −½ (f0 + f)ᵀ x the work done on them and
-  // E = −½ fᵀ u their stored energy; zero for an elastic (reversible) step, whatever its
-  // size, and growing with every loss of stiffness — the path parameter of a softening
-  // branch, on which both force and displacement may decrease.
-  const Eigen::VectorXd f = sys.forces();
-  if (grad) {
-    sys.add_force_gradient(0.5 * u0, *grad);
-    grad->head(nI) -= 0.5 * f0;
-  }
-  return 0.5 * ((f - f0).dot(u0) - f0.dot(z.head(nI))) - dissipation;
+  // The energy adhesion loss releases over the step (Gutiérrez's dissipation control, with
+  // the dissipation of the interface law itself rather than a secant estimate): it only
+  // grows along a debonding path, also where force and displacement both fall. Friction is
+  // left out on purpose: a pile pushed back in dissipates by friction as well, so counting
+  // it would let the step run backwards.
+  if (grad) grad->setZero(n + 1);
+  return sys.released_adhesion_energy(grad) - dissipation;
 }
 
 } // namespace bipot

@@ -20,13 +20,13 @@ PathControl::PathControl(
                       " needs contact_solver.type: generalized_newton and a contact interface");
   capacity_ = adhesion_capacity();
   if (stage.control.type == "dissipation") {
+    if (!(capacity_ > 0))
+      throw SolverError("stage '" + stage.name +
+                        "': control dissipation follows the energy adhesion loss releases, and "
+                        "no interface has adhesion left to lose (no rccm interface with beta > "
+                        "0); use control: arc_length");
     dissipation_step_ = stage.control.dissipation_step > 0 ? stage.control.dissipation_step
                                                            : capacity_ / stage.increments;
-    if (!(dissipation_step_ > 0))
-      throw SolverError("stage '" + stage.name +
-                        "': control dissipation: no interface has adhesion left to lose, so the "
-                        "default dissipation_step (adhesion energy / increments) is 0; give "
-                        "control.dissipation_step or use control: arc_length");
     dissipation_ = dissipation_step_;
   }
 }
@@ -51,19 +51,11 @@ Eigen::VectorXd PathControl::on_interface(const std::vector<double>& u) const {
   return v;
 }
 
-void PathControl::begin_increment(const std::vector<double>& u) {
-  if (!stage_.control.path_following()) return;
-  u0_ = on_interface(u);
-  f0_ = sys_->forces(); // the interfaces were last evaluated at the converged u
-}
-
 PathStep& PathControl::step(int level) {
   PathStep& ps = *step_;
   const double shrink = std::pow(0.5, level);
   ps.x_prev = x_prev_;
   ps.dlambda_prev = dlambda_prev_;
-  ps.u0 = u0_;
-  ps.f0 = f0_;
   if (mode_ == Mode::ArcLength) {
     ps.kind = PathStep::Kind::ArcLength;
     ps.length = shrink * length_;
@@ -73,11 +65,15 @@ PathStep& PathControl::step(int level) {
     ps.kind = PathStep::Kind::Dissipation;
     ps.dissipation = shrink * dissipation_;
     // Along the last increment, scaled to the energy asked for (within reason: the last
-    // increment may have been elastic, dissipating almost nothing).
+    // increment may have been elastic, dissipating nothing: then as far as it went).
     ps.predictor_scale =
-        dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 0.1;
+        dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 1.0;
   }
   return ps;
+}
+
+bool PathControl::forward(const PathStep& step) const {
+  return step.kind != PathStep::Kind::ArcLength || step.x.dot(x_prev_) > 0;
 }
 
 bool PathControl::switch_on_failure() {
@@ -93,7 +89,7 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   dissipation_last_ = 0;
   if (!stage_.control.path_following()) return;
   const Eigen::VectorXd x = on_interface(u) - on_interface(u_begin);
-  dissipation_last_ = 0.5 * ((sys_->forces() - f0_).dot(u0_) - f0_.dot(x));
+  dissipation_last_ = sys_->released_adhesion_energy(nullptr); // before the commit
   // The step that converged sets the next one's length: a traced step's own, or a shorter
   // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
   // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
@@ -113,9 +109,9 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
       length0_ = stage_.control.arc_length > 0 ? stage_.control.arc_length : x.norm();
       length_ = length0_;
       mode_ = Mode::ArcLength;
-    } else if (stage_.control.type == "dissipation" &&
-               dissipation_last_ > 0.1 * dissipation_step_) {
-      mode_ = Mode::Dissipation; // softening has started
+    } else if (stage_.control.type == "dissipation" && dissipation_last_ > dissipation_step_) {
+      // The ramp releases more than a traced step would: softening has set in.
+      mode_ = Mode::Dissipation;
     }
   }
   x_prev_ = x;

@@ -24,15 +24,19 @@ public:
               const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces);
   ~PathControl();
 
-  /// Records the state the increment starts from (u before any predictor).
-  void begin_increment(const std::vector<double>& u);
   /// The next increment is traced (λ an unknown) rather than ramped.
   bool following() const { return mode_ != Mode::Ramp; }
   /// The constraint of the next traced increment, its length halved `level` times.
   PathStep& step(int level);
-  /// The pseudo-time step of a traced increment (the viscosity's Δτ): that of the last
-  /// increment's |Δλ|, since Δλ is only known at the end.
-  double pseudo_time_step() const { return std::abs(dlambda_prev_); }
+  /// The pseudo-time step of a traced increment (the viscosity's Δτ), as a fraction of the
+  /// stage's duration: a planned increment's. Δλ is only known at the end and may be tiny or
+  /// negative on a snap-back, where time still runs; with |Δλ_prev| the viscous β barely
+  /// moved in small steps and the pile's traced path broke down at 7.6 mm.
+  double pseudo_time_step() const { return planned_; }
+  /// A converged traced step goes on along the path: for arc length, its interface
+  /// displacement has a positive projection on the last step's (Crisfield's angle test: the
+  /// constraint ‖x‖ = L also holds going back); a dissipation step cannot go back.
+  bool forward(const PathStep& step) const;
   /// λ would pass 1: ramp to the end of the stage from here.
   void finish() { finished_ = true, mode_ = Mode::Ramp; }
   /// A ramp increment failed: true if dissipation control takes over (the stage asks for
@@ -70,7 +74,7 @@ private:
   double length0_ = 0, length_ = 0; ///< arc length, first and next
   double dissipation_last_ = 0;     ///< of the last converged increment
   double dlambda_prev_ = 0;
-  Eigen::VectorXd x_prev_, u0_, f0_; ///< on the interface DOFs
+  Eigen::VectorXd x_prev_; ///< the last increment on the interface DOFs
   std::unique_ptr<PathStep> step_;
 };
 

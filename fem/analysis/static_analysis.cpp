@@ -41,6 +41,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
   summary.steps = start_steps; // a restart numbers its increments on
+  if (first_stage == 0 || !energy) energy = std::make_unique<EnergyLedger>(interfaces);
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = start_time;
   // Interface resultants (per interface and component) of the last step and the largest
@@ -101,18 +102,28 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       // has its result (a sliver below 1e-9 of a planned increment is merged into it).
       const int next_k = std::min(stage.increments,
                                   static_cast<int>(std::floor(done * stage.increments + 1e-9)) + 1);
-      const double next_level =
+      const double planned_level =
           next_k == stage.increments ? 1.0 : static_cast<double>(next_k) / stage.increments;
+      // A level the stage asks results at (output_at) is a stop as well.
+      const auto asked =
+          std::upper_bound(stage.output_at.begin(), stage.output_at.end(), done + 1e-9 * planned);
+      const bool asked_first =
+          asked != stage.output_at.end() && *asked < planned_level - 1e-9 * planned;
+      const double next_level = asked_first ? *asked : planned_level;
       double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
-      path.begin_increment(u);
       if (path.following()) {
         // Path-following: Δλ is an unknown of the step; a failure halves the step.
         PathStep& ps = path.step(level);
         extrapolation = 0.0;
         const double dtau = path.pseudo_time_step() * stage.duration;
         bool converged = solve_increment_exact(done, dtau, log, &ps);
+        if (converged && !path.forward(ps)) {
+          converged = false;
+          log.failure = "the step turned back along the path (its interface displacement "
+                        "opposes the last step's)";
+        }
         if (converged) lambda = done + ps.dlambda;
         if (converged && lambda > 1.0 - 1e-9 * planned) {
           // The stage ends at λ = 1 exactly: back to the ramp for the last stretch.
@@ -217,14 +228,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         }
       }
       path.end_increment(u, u_begin, lambda - done, log.iterations);
-      for (const auto& ia : interfaces)
-        ia->commit();
       auto t0 = std::chrono::steady_clock::now();
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
+      const std::vector<double> internal = reaction.gather_all();
       // Commit after that cell loop at the converged u: generalized_newton's last bulk
       // assembly was at the start of the increment (the rest followed by condensation).
       solid.commit();
@@ -238,6 +248,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       }
       reaction_all = reaction.gather_all();
       reaction_scale = reaction.norm2();
+      // External forces on the bodies: the loads and the supports' reactions. Recorded
+      // before the interfaces commit (the ledger reads β before and after the step).
+      std::vector<double> external = F_step.gather_all();
+      for (std::size_t d = 0; d < external.size(); ++d)
+        external[d] += reaction_all[d];
+      energy->record(u, external, internal);
+      for (const auto& ia : interfaces)
+        ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
       summary.assembly_seconds += seconds_since(t0);
 
@@ -248,10 +266,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.steps = stage.increments;
       rep.traced = path.traced_last();
       rep.dissipation = path.last_dissipation();
-      rep.planned_step = lambda == next_level && !rep.traced ? next_k : 0;
+      rep.energy = energy->totals();
+      rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
+      rep.requested_output = !rep.traced && lambda == next_level &&
+                             (asked_first || std::binary_search(stage.output_at.begin(),
+                                                                stage.output_at.end(), next_level));
       rep.stage_end = lambda == 1.0;
       rep.global_step = ++summary.steps;
-      if (rep.planned_step == 0 && !rep.traced) ++summary.sub_increments;
+      if (rep.planned_step == 0 && !rep.traced && !rep.requested_output) ++summary.sub_increments;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
       rep.iterations = log.iterations;
@@ -302,6 +324,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.absorb_stress_into_initial(u);
       for (const auto& ia : interfaces)
         ia->absorb_displacements();
+      energy->reset_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
     if (options.on_stage_end) options.on_stage_end(s + 1, time);

@@ -9,6 +9,7 @@
 /// debonding jump, and only then does the run stop.
 
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/core/error.hpp"
@@ -42,6 +43,8 @@ struct StepReport {
   /// (after a cut-back, the sub-increments end exactly on the next planned level).
   int planned_step = 0;
   bool stage_end = false; ///< the last increment of the stage (load factor 1)
+  /// Ends on a load factor the stage's `output_at` asks for (results and VTK are written).
+  bool requested_output = false;
   int global_step = 0;    ///< converged increments so far, 1-based
   double time = 0;        ///< pseudo-time at the end of the increment (s)
   double load_factor = 0; ///< λ within the stage, in (0, 1]
@@ -64,9 +67,11 @@ struct StepReport {
   /// Traced by path-following (stage `control:` arc_length or dissipation): λ was an unknown
   /// of the step and may have decreased (an unstable branch).
   bool traced = false;
-  /// Energy the interfaces released in the increment (kJ; secant estimate of the dissipation
-  /// control, docs/theory.md); 0 outside path-following stages.
+  /// Energy adhesion loss released in the increment (kJ, what dissipation control measures);
+  /// 0 outside path-following stages.
   double dissipation = 0;
+  /// The run's energy balance up to this increment (energy.csv).
+  EnergyTotals energy;
 };
 
 struct RunSummary {
@@ -76,7 +81,7 @@ struct RunSummary {
   int matrix_setups = 0;        ///< preconditioner/factorisation set-ups
   int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
-  int sub_increments = 0;       ///< converged increments that end between planned levels
+  int sub_increments = 0;       ///< converged increments between planned and asked levels
   int traced_increments = 0;    ///< increments traced by path-following
   double failed_seconds = 0;    ///< wall time of the failed attempts
   Index num_dofs = 0;

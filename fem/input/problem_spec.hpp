@@ -112,6 +112,9 @@ struct StageSpec {
   std::vector<InterfaceGapSpec> interface_gaps;
   std::vector<InterfaceLawChangeSpec> interface_laws;
   ControlSpec control;
+  /// Load factors in (0, 1], increasing, at which the ramp also ends an increment and the
+  /// results (VTK included) are written, besides the planned levels k/increments.
+  std::vector<double> output_at;
   std::string where;
 };
 

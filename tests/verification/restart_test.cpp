@@ -52,7 +52,7 @@ const std::string input =
 constexpr std::size_t saved_after = 2; // stages
 
 struct Steps {
-  std::vector<std::vector<double>> rows; ///< per increment: reactions, resultant, min β
+  std::vector<std::vector<double>> rows; ///< per increment: reactions, resultant, min β, energies
   std::vector<double> u;                 ///< final displacement
 };
 
@@ -70,6 +70,10 @@ Steps record(StaticAnalysis& analysis) {
     for (const auto& p : ia.results())
       beta = std::min(beta, p.beta);
     row.push_back(beta);
+    // The energy balance continues too (its totals are cumulative since the start).
+    for (double e : {r.energy.external_work, r.energy.bulk_energy, r.energy.interface_energy,
+                     r.energy.adhesion_dissipation, r.energy.contact_work})
+      row.push_back(e);
     out.rows.push_back(row);
   });
   out.u = analysis.displacement();

@@ -90,10 +90,9 @@ inline std::string residual_history_text(const std::vector<double>& history) {
 /// One path-following increment (stage `control:` arc_length or dissipation): the load
 /// factor's increment Δλ joins the unknowns of the generalized Newton step, bordered by one
 /// constraint g(x, λ_c, Δλ) = 0 (fem/analysis/path_constraint.cpp, docs/theory.md):
-///   arc_length:  ‖x‖ = L                                   (Crisfield, cylindrical)
-///   dissipation: ½ [(f(z) − f0)ᵀ u0 − f0ᵀ x] = Δτ                  (Gutiérrez 2004)
-/// x the increment of the interface DOFs, f the interface forces on them, u0 their
-/// displacements at the start of the increment.
+///   arc_length:  ‖x‖ = L                                (Crisfield, cylindrical)
+///   dissipation: Σ A w (β_committed − β(x)) = Δτ          (Gutiérrez 2004)
+/// x the increment of the interface DOFs, β the adhesion the law gives at the trial jumps.
 struct PathStep {
   enum class Kind { ArcLength, Dissipation } kind = Kind::ArcLength;
   Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
@@ -134,6 +133,7 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  std::unique_ptr<EnergyLedger> energy; ///< created by run(), once the interfaces exist
   /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
   /// Without it, an increment that the predictor already solves (a linear model under
   /// proportional loading) measured its residual against its own round-off and never

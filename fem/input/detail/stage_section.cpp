@@ -157,7 +157,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
   const auto entries =
       list_entries(top, "stages",
                    {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-                    "loads", "interface_gaps", "interfaces", "control"},
+                    "loads", "interface_gaps", "interfaces", "control", "output_at"},
                    expected);
   std::vector<InterfaceLawChangeSpec> active;
   for (const InterfaceSpec& f : interfaces)
@@ -180,6 +180,17 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
     if (m.has("interfaces")) read_stage_interfaces(m, interfaces, active, st);
     if (m.has("control")) read_control(m, st);
+    if (m.reals("output_at", st.output_at) && m.has("output_at")) {
+      for (std::size_t k = 0; k < st.output_at.size(); ++k) {
+        const double f = st.output_at[k];
+        if (!(f > 0 && f <= 1))
+          m.error("output_at", "load factor " + std::to_string(f) +
+                                   " is out of range (0, 1] (fractions of the stage)");
+        else if (k > 0 && !(f > st.output_at[k - 1]))
+          m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
+                                   std::to_string(st.output_at[k - 1]) + ")");
+      }
+    }
     out.push_back(std::move(st));
   }
   return out;
