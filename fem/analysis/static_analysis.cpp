@@ -62,9 +62,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     gravity_now = std::any_of(stage.loads.begin(), stage.loads.end(),
                               [](const LoadSpec& l) { return l.type == LoadSpec::Type::Gravity; });
     matrix_ready = false; // the constrained set may have changed
-    // A stage's first Newton matrix is factorised afresh (GMRES would otherwise start from the
-    // last stage's factors), so that a run restarted at a stage end takes the same steps.
-    newton_matrix.reset();
     // A gap shift not named by the stage keeps its value (it is a state, not a load).
     gap_start.resize(interfaces.size());
     gap_target.resize(interfaces.size());
