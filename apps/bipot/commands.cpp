@@ -1,6 +1,7 @@
 #include "apps/bipot/commands.hpp"
 #include "apps/common/app_support.hpp"
 #include "apps/common/checked_model.hpp"
+#include "apps/common/checkpoints.hpp"
 #include "apps/common/run_folder.hpp"
 #include "apps/common/step_text.hpp"
 
@@ -95,7 +96,7 @@ int check_command(const std::vector<std::string>& args) {
 int run_command(const std::vector<std::string>& args) {
   if (wants_help(args)) {
     if (root())
-      std::cout << "bipot run FILE.yaml [--output DIR] [--quiet]\n"
+      std::cout << "bipot run FILE.yaml [--output DIR] [--restart CHECKPOINT] [--quiet]\n"
                    "  Solves the problem stage by stage and writes DIR (default: "
                    "output.directory):\n"
                    "  solution.pvd (open it in ParaView), reactions.csv and status.txt. The "
@@ -103,11 +104,16 @@ int run_command(const std::vector<std::string>& args) {
                    "  written into DIR.running-<pid> and replace DIR only when the run "
                    "finishes; a failed\n"
                    "  run leaves DIR as it was and its converged increments in DIR.failed.\n"
-                   "  Prints one progress line per converged increment unless --quiet.\n";
+                   "  Prints one progress line per converged increment unless --quiet.\n"
+                   "  --restart continues from a checkpoint (output.checkpoint) of the same "
+                   "input,\n"
+                   "  after the stage it was written at; DIR starts with the results up to "
+                   "there,\n"
+                   "  copied from the checkpoint's folder.\n";
     return 0;
   }
   bool quiet = false;
-  std::string output;
+  std::string output, restart;
   std::vector<std::string> files;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -115,22 +121,37 @@ int run_command(const std::vector<std::string>& args) {
       quiet = true;
     else if (a == "--output" && i + 1 < args.size())
       output = args[++i];
+    else if (a == "--restart" && i + 1 < args.size())
+      restart = args[++i];
     else if (!a.empty() && a[0] == '-') {
       if (root()) std::cerr << "bipot run: unknown option '" << a << "'\n";
       return 1;
     } else
       files.push_back(a);
   }
-  const std::string file = one_file(files, "bipot run FILE.yaml [--output DIR] [--quiet]");
+  const std::string file =
+      one_file(files, "bipot run FILE.yaml [--output DIR] [--restart CHECKPOINT] [--quiet]");
   if (file.empty()) return 1;
   return guarded([&] {
     const Model model = checked_model(read_problem_file(file));
     print_model_warnings(model, "bipot");
+    // A checkpoint of another input is refused before the results folder is touched.
+    const StateArrays restored = restart.empty() ? StateArrays{} : read_restart(restart, model);
     RunFolder folder(output.empty() ? model.spec.output.directory : output, model.spec, "bipot");
     RunSummary summary;
     {
       ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
-      StaticAnalysis analysis(model, {}, &writer);
+      const StaticAnalysis* running = nullptr;
+      AnalysisOptions options;
+      options.on_stage_end = checkpoint_writer(model, &running, folder.working());
+      StaticAnalysis analysis(model, options, &writer);
+      running = &analysis;
+      if (!restart.empty()) {
+        const std::size_t done = restore(restart, restored, analysis, writer, model);
+        if (root() && !quiet)
+          std::cout << "bipot: restart from " << restart << " after stage '"
+                    << model.spec.stages[done - 1].name << "'\n";
+      }
       if (root() && !quiet)
         std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "
                   << model.mesh.num_cells() << " cells, " << analysis.dofs().num_dofs()

@@ -57,7 +57,7 @@ Model checked_model(const ProblemSpec& spec) {
       o.smallest_gap = std::min(o.smallest_gap, pair.gap);
     }
     o.smallest_gap += iface.initial_gap;
-    if (!model.interface_laws[k]->is_tied()) opening.push_back(std::move(o));
+    if (!contact::shares_nodes(iface)) opening.push_back(std::move(o));
   }
   const MeshSpec& m = model.spec.mesh;
   const std::string where = m.where + (m.has_blocks || m.file.empty() ? "" : ": " + m.file);

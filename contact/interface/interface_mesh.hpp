@@ -49,6 +49,10 @@ struct Interface {
   bool obstacle = false;  ///< body 2 is a rigid obstacle: every node_b is rigid_obstacle
 };
 
+/// Whether the interface's bodies share its nodes (every pair has node_a == node_b): built
+/// with tie_only, for an interface bonded in every stage.
+bool shares_nodes(const Interface& iface);
+
 /// Builds the interfaces `defs` (in that order) on `mesh`, splitting it where needed.
 ///
 /// Region mode ("between: [a, b]"): the facets shared by a region-a and a region-b cell are

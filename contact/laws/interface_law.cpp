@@ -1,7 +1,5 @@
 #include "contact/laws/interface_law.hpp"
 
-#include "fem/core/error.hpp"
-
 #include <cassert>
 
 namespace bipot::contact {
@@ -31,14 +29,34 @@ InterfaceState initial_state(const InterfaceLaw& law, int local_size) {
   return s;
 }
 
+InterfaceResponse evaluate_tie(const InterfaceState& old, const LocalVector& jump,
+                               const LocalVector& r, double rho,
+                               InterfaceResponseDerivatives* derivatives) {
+  // The augmented Lagrangian of the equality jump = old.jump: no cone, no projection. Its
+  // fixed point r_new = r holds the jump exactly where it was (to the solver's tolerance,
+  // not a penalty's error), like a sticking pair that cannot open.
+  const Eigen::Index d = jump.size();
+  InterfaceResponse out;
+  out.beta = 1.0;
+  out.tau = r - rho * (jump - old.jump);
+  out.r = out.tau;
+  out.traction = out.r;
+  out.status = ContactStatus::Stick;
+  if (derivatives) {
+    const LocalMatrix I = LocalMatrix::Identity(d, d);
+    derivatives->dbeta_djump = LocalVector::Zero(d);
+    derivatives->dr_djump = derivatives->dt_djump = -rho * I;
+    derivatives->dr_dr = derivatives->dt_dr = I;
+  }
+  return out;
+}
+
 InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
                            const LocalVector& jump, const LocalVector& r, double dtau, double rho,
                            InterfaceResponseDerivatives* derivatives) {
-  if (law.is_tied())
-    throw Error("interface law '" + law.name() +
-                "' is tied: the solver must eliminate the jump, not evaluate the law");
   const Eigen::Index d = jump.size();
   assert((d == 2 || d == 3) && r.size() == d && old.jump.size() == d);
+  if (law.is_tied()) return evaluate_tie(old, jump, r, rho, derivatives);
 
   InterfaceResponse out;
   LocalVector dbeta_djump;

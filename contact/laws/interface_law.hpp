@@ -94,9 +94,17 @@ struct InterfaceResponseDerivatives {
 ///   r_new = Proj_{K_μ̄}(τ),  t = r_new − β²(C_n g_n n + C_t g_t).
 /// `dtau` is the pseudo-time step (s), `rho` > 0 the augmentation parameter (kPa/m). Its fixed
 /// points r_new = r are exactly the solutions of the interface law. Fills `derivatives` when
-/// non-null. Throws bipot::Error for a tied law (the solver must eliminate the jump instead).
+/// non-null. A tied law gives evaluate_tie().
 InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
                            const LocalVector& jump, const LocalVector& r, double dtau, double rho,
                            InterfaceResponseDerivatives* derivatives = nullptr);
+
+/// The map of a tied law (perfect bonding) on a split pair: the augmented Lagrangian of the
+/// equality jump = old.jump (docs/theory.md, "Interface changes between stages"),
+///   τ = r − ρ (jump − old.jump),  r_new = τ,  t = r_new,  β = 1, status stick,
+/// whose fixed point r_new = r holds the jump exactly, with r the traction that does it.
+InterfaceResponse evaluate_tie(const InterfaceState& old, const LocalVector& jump,
+                               const LocalVector& r, double rho,
+                               InterfaceResponseDerivatives* derivatives = nullptr);
 
 } // namespace bipot::contact

@@ -7,9 +7,10 @@
 namespace bipot::contact {
 
 /// Perfect bonding: g = 0 (docs/formulation.md §3); the traction is whatever keeps the jump zero.
-/// It is enforced exactly by the solver (constraint elimination of the jump), never by a
-/// penalty, so the point-wise functions are not used (evaluate() refuses a tied law). RCCM with
-/// huge w, C_n and C_t approaches it.
+/// Enforced exactly, never by a penalty: an interface bonded in every stage keeps shared nodes
+/// (no jump exists); one bonded in some stages only is split and its pairs are held by
+/// evaluate_tie() (an equality multiplier, exact to the solver's tolerance), so the
+/// point-wise functions below are not used. RCCM with huge w, C_n and C_t approaches it.
 class PerfectBonding : public InterfaceLaw {
 public:
   /// No keys.

@@ -54,15 +54,19 @@ const char* to_string(PairStatus status) {
 
 InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLaw& law,
                                        const DofMap& dofs, const DofDistribution& dist)
-    : iface_(iface), law_(law), dofs_(dofs), dim_(dofs.dofs_per_node()), frozen_law_(law) {
+    : iface_(iface), law_(&law), dofs_(dofs), dim_(dofs.dofs_per_node()),
+      shared_nodes_(shares_nodes(iface)), frozen_law_(law) {
   const std::size_t n = iface_.pairs.size();
   owned_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     owned_[i] = dist.owner_of_node(iface_.pairs[i].node_a) == dist.rank();
   rho_.assign(n, 1.0);
-  committed_.assign(n, law_.is_tied() ? InterfaceState{} : initial_state(law_, dim_));
-  for (auto& s : committed_)
-    if (s.jump.size() == 0) s.jump = s.r = LocalVector::Zero(dim_);
+  committed_.assign(n, initial_state(law, dim_));
+  for (std::size_t i = 0; i < n; ++i) {
+    // The jump at rest, which a tied law on split pairs holds: the gaps only.
+    committed_[i].jump(0) = iface_.initial_gap + iface_.pairs[i].gap;
+    if (law.is_tied()) committed_[i].beta = 1.0;
+  }
   multiplier_.assign(n, LocalVector::Zero(dim_));
   previous_r_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -113,7 +117,7 @@ void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
     // The multipliers converge like ρ/(ρ + bulk stiffness) per update: ρ must dominate the
     // bodies' stiffness at the pair, not only the law's (a soft adhesive joint between stiff
     // bodies needed 110 updates per increment with ρ = 10 C_n in the pile model, 13 with this).
-    double rho = std::max(law_.stiffness_scale(), std::isfinite(bulk) ? bulk : 0.0);
+    double rho = std::max(law_->stiffness_scale(), std::isfinite(bulk) ? bulk : 0.0);
     if (!(rho > 0)) rho = 1.0;
     rho_[i] = options.augmentation_factor * rho;
   }
@@ -160,8 +164,8 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
     InterfaceState old = committed_[i];
     if (frozen_) old.beta = frozen_beta_[i];
     const InterfaceResponse resp =
-        frozen_ ? contact::evaluate(frozen_law_, old, jump, multiplier_[i], dtau, rho_[i], &d)
-                : contact::evaluate(law_, old, jump, multiplier_[i], dtau, rho_[i], &d);
+        frozen_ ? contact::evaluate(*frozen_law_, old, jump, multiplier_[i], dtau, rho_[i], &d)
+                : contact::evaluate(*law_, old, jump, multiplier_[i], dtau, rho_[i], &d);
     PairResult& res = results_[i];
     res.beta = resp.beta;
     res.jump = jump;
@@ -260,6 +264,23 @@ void InterfaceAssembler::commit() {
   }
 }
 
+void InterfaceAssembler::set_law(const InterfaceLaw& law) {
+  if (shared_nodes_ && !law.is_tied())
+    throw Error("interface '" + iface_.name +
+                "': its bodies share nodes, so it cannot take the "
+                "law '" +
+                law.name() + "' (the model splits an interface that any stage unties)");
+  law_ = &law;
+  frozen_law_.emplace(law);
+  frozen_ = false;
+  for (std::size_t i = 0; i < committed_.size(); ++i) {
+    double& beta = committed_[i].beta;
+    beta = law.is_tied() ? 1.0 : std::min(beta, law.initial_adhesion());
+    results_[i].beta = beta;
+  }
+  tangent_changed_ = true;
+}
+
 void InterfaceAssembler::set_tied_forces(const std::vector<double>& force_all) {
   force_.assign(iface_.pairs.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
@@ -298,7 +319,7 @@ std::vector<double> InterfaceAssembler::adhesion_at(const std::vector<double>& u
   std::vector<double> beta(committed_.size());
   for (std::size_t i = 0; i < committed_.size(); ++i)
     beta[i] = tied() ? committed_[i].beta
-                     : law_.update_adhesion(committed_[i].beta, local_jump(i, u), dtau);
+                     : law_->update_adhesion(committed_[i].beta, local_jump(i, u), dtau);
   return beta;
 }
 

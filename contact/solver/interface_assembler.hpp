@@ -19,7 +19,9 @@
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
+#include "fem/core/state_arrays.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace bipot {
@@ -55,7 +57,8 @@ const char* to_string(PairStatus status);
 
 class InterfaceAssembler {
 public:
-  /// `law` is not owned. Pairs with node_a == node_b (perfect bonding) are not assembled.
+  /// `law` is not owned. An interface whose bodies share its nodes (perfect bonding in every
+  /// stage) is not assembled; a tied law on split pairs holds their jumps (evaluate_tie()).
   InterfaceAssembler(const Interface& iface, const InterfaceLaw& law, const DofMap& dofs,
                      const DofDistribution& dist);
 
@@ -63,8 +66,14 @@ public:
   /// Rigid bodies (not owned, null for none): pairs on a body's nodes put their blocks on
   /// its reference node (the augmented-Lagrangian solvers; generalized_newton refuses them).
   void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
-  const InterfaceLaw& law() const { return law_; }
-  bool tied() const { return law_.is_tied(); }
+  const InterfaceLaw& law() const { return *law_; }
+  /// Tied by shared nodes: nothing to evaluate or assemble (forces from set_tied_forces()).
+  bool tied() const { return law_->is_tied() && shared_nodes_; }
+  /// Puts `law` (not owned) in force from the next increment on (a stage's law change). The
+  /// committed state carries over (docs/theory.md): jumps, slips and multipliers r̂ (a
+  /// predictor for the new law) as they are; β becomes min(β, the new law's β0), and 1 under
+  /// a tied law, which holds each pair's jump where it is.
+  void set_law(const InterfaceLaw& law);
   std::size_t num_pairs() const { return iface_.pairs.size(); }
 
   /// Adds the [a, b] DOF block of every owned pair.
@@ -126,6 +135,15 @@ public:
   void set_obstacle_displacement(const std::array<double, 3>& u) { obstacle_u_ = u; }
   const std::array<double, 3>& obstacle_displacement() const { return obstacle_u_; }
 
+  /// The committed state for a checkpoint (interface_state.cpp; every rank holds every pair):
+  /// per pair β, jump, r, the r of the increment before, the multipliers, the offsets kept
+  /// through displacement resets and ρ; the gap shift. The law in force is not in it (a
+  /// stage's `interfaces:` gives it).
+  StateArrays save_state() const;
+  /// Restores save_state()'s arrays; the last evaluation becomes the committed state. Throws
+  /// bipot::Error naming the interface if an array is missing or sized for other pairs.
+  void load_state(const StateArrays& state);
+
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }
   /// Generalized derivatives of the last evaluation of pair `i` (local frame), for the exact
@@ -151,10 +169,11 @@ private:
   double u_b(const InterfacePair& p, int c, const std::vector<double>& u) const;
 
   const Interface& iface_;
-  const InterfaceLaw& law_;
+  const InterfaceLaw* law_;
   const DofMap& dofs_;
   const RigidBodyConstraints* rigid_ = nullptr;
   int dim_;
+  bool shared_nodes_ = false;
   std::vector<bool> owned_;
   std::vector<double> rho_;
   std::vector<InterfaceState> committed_;
@@ -169,7 +188,7 @@ private:
   double roundoff_force_ = 0;
   double gap_shift_ = 0;
   std::array<double, 3> obstacle_u_{0, 0, 0};
-  FrozenAdhesion frozen_law_;
+  std::optional<FrozenAdhesion> frozen_law_;
   bool frozen_ = false;
   std::vector<double> frozen_beta_;
   bool tangent_changed_ = true;

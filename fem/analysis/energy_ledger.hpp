@@ -8,6 +8,7 @@
 /// time-discretisation error of the energy, not a solver error (docs/theory.md).
 
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/core/state_arrays.hpp"
 
 #include <array>
 #include <memory>
@@ -40,6 +41,11 @@ public:
   /// The displacements were reset to zero with the stresses kept (geostatic stage).
   void reset_displacements();
   const EnergyTotals& totals() const { return totals_; }
+  /// Its whole state for a checkpoint (energy_ledger_state.cpp): the totals, the last step's
+  /// u and forces, every pair's jump, traction, r and β, and the gap shifts.
+  StateArrays save_state() const;
+  /// Restores save_state()'s arrays; throws bipot::Error if they do not fit.
+  void load_state(const StateArrays& state);
 
 private:
   struct PairState {

@@ -49,13 +49,23 @@ contact::RigidObstacle rigid_obstacle(const ObstacleSpec& spec) {
   return o;
 }
 
-// Splits the mesh along every interface: tied ones (perfect bonding) keep their shared nodes,
-// the others get the body-2 side's nodes duplicated and paired.
+// Splits the mesh along every interface: those tied in every stage (perfect bonding) keep
+// their shared nodes, the others get the body-2 side's nodes duplicated and paired.
 void split_interfaces(Model& model) {
   const auto& laws = contact::interface_laws();
   std::vector<contact::InterfaceDefinition> tied, split;
   std::vector<bool> is_tied;
-  for (const auto& spec : model.spec.interfaces) {
+  const auto& stages = model.spec.stages;
+  for (std::size_t s = 0; s < stages.size(); ++s)
+    for (const auto& change : stages[s].interface_laws) {
+      const auto k = static_cast<std::size_t>(
+          std::find_if(model.spec.interfaces.begin(), model.spec.interfaces.end(),
+                       [&](const InterfaceSpec& f) { return f.name == change.interface; }) -
+          model.spec.interfaces.begin());
+      model.stage_laws.push_back({s, k, laws.create(change.law, change.parameters)});
+    }
+  for (std::size_t k = 0; k < model.spec.interfaces.size(); ++k) {
+    const InterfaceSpec& spec = model.spec.interfaces[k];
     model.interface_laws.push_back(laws.create(spec.law, spec.parameters));
     contact::InterfaceDefinition def;
     def.name = spec.name;
@@ -72,7 +82,10 @@ void split_interfaces(Model& model) {
     if (spec.pairing == "normal") def.pairing = contact::Pairing::Normal;
     if (spec.obstacle) def.obstacle = rigid_obstacle(*spec.obstacle);
     def.where = spec.where;
-    is_tied.push_back(model.interface_laws.back()->is_tied());
+    bool tied_always = model.interface_laws.back()->is_tied();
+    for (const auto& sl : model.stage_laws)
+      if (sl.interface == k) tied_always = tied_always && sl.law->is_tied();
+    is_tied.push_back(tied_always);
     (is_tied.back() ? tied : split).push_back(def);
   }
   auto tied_ifaces = contact::split_interfaces(model.mesh, model.kinematics, tied, true);

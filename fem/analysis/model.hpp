@@ -23,6 +23,12 @@ struct Model {
   std::vector<const Material*> material_of_region;  ///< indexed by mesh region id
   std::vector<contact::Interface> interfaces;       ///< split and paired, in input order
   std::vector<std::unique_ptr<contact::InterfaceLaw>> interface_laws; ///< one per interface
+  /// A law a stage puts in force on an interface (stage `interfaces:`), in stage order.
+  struct StageLaw {
+    std::size_t stage = 0, interface = 0;
+    std::unique_ptr<contact::InterfaceLaw> law;
+  };
+  std::vector<StageLaw> stage_laws;
   contact::ContactSolverOptions contact_solver;
   /// In input order; their reference nodes are the mesh's last nodes (two per body).
   std::vector<RigidBody> rigid_bodies;
@@ -38,7 +44,8 @@ void add_rigid_bodies(Model& model);
 /// Builds the mesh (generator or Gmsh file) and the materials, then checks everything that
 /// needs the mesh: every region has a material and every material a region, every set named
 /// by a boundary condition or load exists (with the nearest names), axisymmetric meshes have
-/// r ≥ 0. Then splits the mesh along each interface (perfect bonding keeps shared nodes).
+/// r ≥ 0. Then splits the mesh along each interface (perfect bonding in every stage keeps
+/// shared nodes; an interface bonded in some stages only is split and tied on its pairs).
 /// Throws InputError listing every problem with the user's file:line:col.
 Model build_model(const ProblemSpec& spec);
 

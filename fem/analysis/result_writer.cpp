@@ -66,8 +66,8 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
       // needs body 1 as a region: not for tied facet-set interfaces (but tied obstacles:
       // the reactions of the nodes they hold).
-      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2 &&
-          !model.interfaces[k].obstacle)
+      if (contact::shares_nodes(model.interfaces[k]) &&
+          model.spec.interfaces[k].between.size() != 2 && !model.interfaces[k].obstacle)
         continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);
@@ -123,6 +123,20 @@ std::string ResultWriter::reactions_path() const {
 }
 std::string ResultWriter::pvd_path() const {
   return directory_ + "/solution.pvd";
+}
+
+void ResultWriter::resume(const std::string& directory, std::size_t stages_done, double time) {
+  const auto last = static_cast<double>(stages_done);
+  const auto file_name = [](const std::string& path) {
+    return path.substr(path.find_last_of('/') + 1);
+  };
+  if (reactions_) reactions_->copy_rows(directory + "/" + file_name(reactions_->path()), last);
+  for (const auto& csv : interface_csv_)
+    csv->copy_rows(directory + "/" + file_name(csv->path()), last);
+  if (energy_) energy_->copy_rows(directory + "/" + file_name(energy_->path()), last);
+  if (vtk_) vtk_->resume(directory, time);
+  for (const auto& vtk : interface_vtk_)
+    if (vtk) vtk->resume(directory, time);
 }
 
 void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& analysis) {

@@ -28,6 +28,12 @@ public:
   /// Called by StaticAnalysis on every rank after each converged increment (collective).
   void write_step(const StepReport& report, const StaticAnalysis& analysis);
 
+  /// A restart: the results of an earlier run in `directory` (the folder its checkpoint is
+  /// in) up to the end of stage `stages_done` (pseudo-time `time`) are copied first — the CSV
+  /// rows and the VTK steps — so that this run's folder holds the whole series. Every rank,
+  /// before the first write_step(). Throws bipot::Error if they cannot be read.
+  void resume(const std::string& directory, std::size_t stages_done, double time);
+
   const std::string& directory() const { return directory_; }
   /// Path of the reactions CSV.
   std::string reactions_path() const;

@@ -40,16 +40,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   const auto run_start = std::chrono::steady_clock::now();
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
-  energy = std::make_unique<EnergyLedger>(interfaces);
+  summary.steps = start_steps; // a restart numbers its increments on
+  if (first_stage == 0 || !energy) energy = std::make_unique<EnergyLedger>(interfaces);
   const int max_cutbacks = model.contact_solver.max_cutbacks;
-  double time = 0.0;
+  double time = start_time;
   // Interface resultants (per interface and component) of the last step and the largest
-  // magnitudes seen, for the snap-back flag.
-  std::vector<std::array<double, 3>> last_resultant(interfaces.size(), {0, 0, 0});
-  std::vector<std::array<double, 3>> largest_resultant(interfaces.size(), {0, 0, 0});
-  double largest_any = 0.0;
+  // magnitudes seen, for the snap-back flag (restored by a restart).
+  last_resultant.resize(interfaces.size(), {0, 0, 0});
+  largest_resultant.resize(interfaces.size(), {0, 0, 0});
 
-  for (std::size_t s = 0; s < model.spec.stages.size(); ++s) {
+  for (std::size_t s = first_stage; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
     target.clear();
     for (const auto& bc : stage.boundary_conditions)
@@ -71,6 +71,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       gap_start[k] = gap_target[k] = interfaces[k]->gap_shift();
       for (const auto& gap : stage.interface_gaps)
         if (gap.interface == model.interfaces[k].name) gap_target[k] = gap.value;
+    }
+
+    // Laws the stage puts in force (the state carries over: InterfaceAssembler::set_law); ρ
+    // follows the new laws' stiffness.
+    bool law_changed = false;
+    for (const auto& sl : model.stage_laws)
+      if (sl.stage == s) interfaces[sl.interface]->set_law(*sl.law), law_changed = true;
+    if (law_changed && has_contact) {
+      choose_augmentation();
+      schur_ready = false; // K was overwritten by the unconstrained bulk matrix
     }
 
     const double planned = 1.0 / stage.increments;
@@ -171,7 +181,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           // repeat the failed solve.
           beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
             const std::vector<double> beta = ia->committed_adhesion();
-            return !ia->tied() &&
+            return !ia->law().is_tied() &&
                    std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
           });
           if (has_contact && beta_can_change) {
@@ -318,6 +328,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       energy->reset_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
+    if (options.on_stage_end) options.on_stage_end(s + 1, time);
   }
   summary.seconds = seconds_since(run_start);
   return summary;
@@ -350,6 +361,14 @@ StaticAnalysis::~StaticAnalysis() = default;
 
 RunSummary StaticAnalysis::run(const std::function<void(const StepReport&)>& on_step) {
   return impl_->run(on_step);
+}
+
+StateArrays StaticAnalysis::save_state(std::size_t stages_done, double time) const {
+  return impl_->save_state(stages_done, time);
+}
+
+void StaticAnalysis::load_state(const StateArrays& state) {
+  impl_->load_state(state);
 }
 
 const std::vector<double>& StaticAnalysis::displacement() const {

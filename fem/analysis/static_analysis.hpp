@@ -13,6 +13,7 @@
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/core/error.hpp"
+#include "fem/core/state_arrays.hpp"
 
 #include <functional>
 #include <memory>
@@ -27,6 +28,9 @@ class ResultWriter;
 struct AnalysisOptions {
   int max_iterations = 25;          ///< Newton iterations per increment
   double residual_tolerance = 1e-8; ///< relative to the first residual of the increment
+  /// Called on every rank at the end of each stage, after its displacement reset, with the
+  /// number of stages done and the pseudo-time (s): where save_state() is complete.
+  std::function<void(std::size_t stages_done, double time)> on_stage_end;
 };
 
 /// What a converged increment reports (progress lines, tests).
@@ -110,6 +114,17 @@ public:
   /// Runs every stage. Throws IncrementFailure naming the stage, step, iteration and residual
   /// history if an increment does not converge; increments converged before stay written.
   RunSummary run(const std::function<void(const StepReport&)>& on_step = {});
+
+  /// The complete state after `stages_done` stages ending at pseudo-time `time` (call it from
+  /// AnalysisOptions::on_stage_end; collective): displacements, the solid's per-point state
+  /// gathered from every rank by global cell, every interface's committed state, the load and
+  /// reaction memory and the step count (analysis_state.cpp). The same on every rank.
+  StateArrays save_state(std::size_t stages_done, double time) const;
+  /// Restores a save_state() made by the same model at any rank count (every rank, before
+  /// run()); run() then continues with the next stage, as the saved run did. The laws the
+  /// done stages put in force are put in force again. Throws bipot::Error if the arrays do
+  /// not fit this model.
+  void load_state(const StateArrays& state);
 
   /// Total displacement, all DOFs, replicated on every rank.
   const std::vector<double>& displacement() const;

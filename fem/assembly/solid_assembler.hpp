@@ -4,6 +4,7 @@
 
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/state_arrays.hpp"
 #include "fem/element/element_values.hpp"
 #include "fem/mesh/mesh.hpp"
 #include "materials/material.hpp"
@@ -46,6 +47,17 @@ public:
   /// quadrature point is added to the initial stress, and the caller then zeroes `u`.
   void absorb_stress_into_initial(const std::vector<double>& u);
 
+  /// The committed state of the owned cells for a checkpoint (solid_state.cpp): "cells" (global
+  /// ids), "points" (quadrature points of each), and every per-point and per-cell array
+  /// (today σ0 as "point.initial_stress", the committed averages as "cell.strain" and
+  /// "cell.stress"), cell after cell, each with its values per cell ("<name>.count"). Keyed by
+  /// global cell id, so that the arrays gathered from every rank restore the state at any
+  /// rank count. A new array is one line in state_array_refs().
+  StateArrays save_state() const;
+  /// Restores the owned cells' state from the arrays of every cell (gathered save_state()s, in
+  /// any order). Throws bipot::Error if an owned cell or an array is missing or sized wrongly.
+  void load_state(const StateArrays& state);
+
   const std::vector<Index>& owned_cells() const { return owned_cells_; }
   /// Rigid bodies (not owned; null for none): every cell system, pattern and internal force
   /// is transformed onto their masters, and assemble() adds the inactive DOFs' identity rows.
@@ -58,6 +70,16 @@ public:
   int voigt_size() const { return nv_; }
 
 private:
+  /// An array of the state for save_state()/load_state(): owned cell k holds
+  /// values[offsets[k], offsets[k + 1]) (the array may be empty until first used: σ0).
+  struct StateArrayRef {
+    const char* name;
+    std::vector<double>* values;
+    std::vector<Index> offsets;
+  };
+  /// Every per-point and per-cell array of the committed state (solid_state.cpp).
+  std::vector<StateArrayRef> state_array_refs();
+
   ElementValues& values_for(CellType type);
   template <class CellKernel>
   void loop(const std::vector<double>& u, CellKernel&& kernel,

@@ -2,6 +2,7 @@
 
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/error.hpp"
+#include "fem/core/nearest_name.hpp"
 #include "fem/input/detail/sections.hpp"
 #include "fem/input/detail/yaml_map.hpp"
 #include "fem/linalg/linear_solver.hpp"
@@ -29,8 +30,9 @@ const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
                      "parameters, initial_gap}"},
       {"rigid_bodies", "list of {name, region | set, reference_point}"},
       {"contact_solver", "type: semismooth_newton | bipotential_uzawa, and its options"},
-      {"stages", "list of load stages: name, increments, boundary_conditions, loads"},
-      {"output", "directory, vtk, every"},
+      {"stages", "list of load stages: name, increments, boundary_conditions, loads, "
+                 "interface_gaps, interfaces (law changes), control"},
+      {"output", "directory, vtk, every, checkpoint"},
   };
   return keys;
 }
@@ -78,10 +80,22 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
     validate(contact::contact_solvers().schema(spec.contact_solver.type),
              spec.contact_solver.parameters);
   if (top.has("stages"))
-    spec.stages = input::read_stages(top, spec.kinematics);
+    spec.stages = input::read_stages(top, spec.kinematics, spec.interfaces);
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
+  // Checkpoints are written at the end of the stages they name.
+  std::vector<std::string> stage_names;
+  for (const auto& st : spec.stages)
+    stage_names.push_back(st.name);
+  for (const auto& name : spec.output.checkpoint_after)
+    if (std::find(stage_names.begin(), stage_names.end(), name) == stage_names.end()) {
+      const std::string near = nearest_name(name, stage_names);
+      diag.error_at(spec.output.checkpoint_where,
+                    "no stage named '" + name + "'" +
+                        (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                        "; stages: " + join_names(stage_names));
+    }
   input::check_stage_controls(spec, diag);
   return spec;
 }

@@ -112,6 +112,16 @@ struct ControlSpec {
   bool path_following() const { return type != "ramp"; }
 };
 
+/// A stage's change of an interface's law or parameters (`interfaces: {name: {law, parameters}}`
+/// in the stage), resolved when read: `law` and `parameters` are the complete set in force
+/// from this stage on (parameters given without a new law are merged over those in force).
+struct InterfaceLawChangeSpec {
+  std::string interface;
+  std::string law;
+  ParameterSet parameters; ///< validated against the law's schema, defaults filled in
+  std::string where;
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -124,6 +134,7 @@ struct StageSpec {
   std::vector<InterfaceGapSpec> interface_gaps;
   std::vector<ObstacleDisplacementSpec> obstacle_displacements;
   std::vector<RigidBodyConditionSpec> rigid_body_conditions;
+  std::vector<InterfaceLawChangeSpec> interface_laws;
   ControlSpec control;
   /// Load factors in (0, 1], increasing, at which the ramp also ends an increment and the
   /// results (VTK included) are written, besides the planned levels k/increments.
@@ -181,6 +192,10 @@ struct OutputSpec {
   int every = 1; ///< write VTK every n-th converged increment (and always the last of a stage)
   /// "file:line:col: output.directory" when the input gives it, "" otherwise
   std::string where;
+  /// `checkpoint: {after: [stage names]}`: write `checkpoint_<stage>.bin` into the results at
+  /// the end of these stages (the complete state, for `bipot run --restart`).
+  std::vector<std::string> checkpoint_after;
+  std::string checkpoint_where;
 };
 
 struct ProblemSpec {

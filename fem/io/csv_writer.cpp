@@ -4,7 +4,9 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 
 namespace bipot {
 
@@ -46,6 +48,23 @@ void CsvWriter::write_row(const std::vector<double>& values) {
     out_ << (i ? "," : "") << buf;
   }
   out_ << '\n' << std::flush; // a crash keeps every completed row
+  if (!out_) throw Error("CsvWriter: cannot write to '" + path_ + "'");
+}
+
+void CsvWriter::copy_rows(const std::string& path, double last_stage) {
+  std::ifstream in(path);
+  if (!in) throw Error("CsvWriter: cannot read '" + path + "' to copy its rows");
+  std::string header, line;
+  std::getline(in, header);
+  std::string expected;
+  for (std::size_t i = 0; i < columns_.size(); ++i)
+    expected += (i ? "," : "") + quoted(columns_[i]);
+  if (header != expected)
+    throw Error("CsvWriter: '" + path + "' has the header '" + header + "', expected '" + expected +
+                "'");
+  while (std::getline(in, line))
+    if (!line.empty() && std::strtod(line.c_str(), nullptr) <= last_stage) out_ << line << '\n';
+  out_ << std::flush;
   if (!out_) throw Error("CsvWriter: cannot write to '" + path_ + "'");
 }
 

@@ -203,6 +203,7 @@ void VtkSeriesWriter::write_step(double time, const Mesh& mesh, const std::vecto
   if (writer->Write() != 1) throw Error("VtkSeriesWriter: cannot write '" + file + "'");
 
   times_.push_back(time);
+  files_.push_back(size_ > 1 ? pvtu_name(step) : piece_name(step, 0));
   if (rank_ != 0) return;
   if (size_ > 1) write_pvtu(step, mesh.dim, point_fields, cell_fields);
   write_pvd();
@@ -249,8 +250,7 @@ void VtkSeriesWriter::write_pvd() const {
   char time[32];
   for (int s = 0; s < num_steps(); ++s) {
     std::snprintf(time, sizeof time, "%.17g", times_[s]);
-    const std::string data = size_ > 1 ? pvtu_name(s) : piece_name(s, 0);
-    out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << xml_escape(data)
+    out << "    <DataSet timestep=\"" << time << "\" part=\"0\" file=\"" << xml_escape(files_[s])
         << "\"/>\n";
   }
   out << "  </Collection>\n"

@@ -47,6 +47,13 @@ public:
   void write_step(double time, const Mesh& mesh, const std::vector<Index>& cells,
                   const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields);
 
+  /// Continues the series of an earlier run in `directory` (a restart): its steps up to
+  /// pseudo-time `time` (relative tolerance 1e-12) are listed first in the .pvd, and rank 0
+  /// copies their files (a .pvtu with its pieces) into this writer's directory. Call before
+  /// the first write_step(), on every rank. Throws bipot::Error if the earlier .pvd or a file
+  /// it names cannot be read or copied.
+  void resume(const std::string& directory, double time);
+
   /// Number of steps written so far (= index of the next step).
   int num_steps() const { return static_cast<int>(times_.size()); }
   /// File name (without directory) of a step's piece of a rank.
@@ -66,7 +73,8 @@ private:
   std::string basename_;
   int rank_;
   int size_;
-  std::vector<double> times_; ///< time of every completed step
+  std::vector<double> times_;      ///< time of every completed step
+  std::vector<std::string> files_; ///< the file the .pvd lists for each step
 };
 
 } // namespace bipot

@@ -301,6 +301,16 @@ struct StaticAnalysis::Impl {
   double residual_norm(const std::vector<double>& trial, double dtau,
                        const Constraints& constraints);
   RunSummary run(const std::function<void(const StepReport&)>& on_step);
+
+  // Where run() starts (analysis_state.cpp: a state loaded after `first_stage` stages) and the
+  // snap-back monitor's memory, per interface and component (kept across stages).
+  std::size_t first_stage = 0;
+  double start_time = 0.0;
+  int start_steps = 0;
+  std::vector<std::array<double, 3>> last_resultant, largest_resultant;
+  double largest_any = 0.0;
+  StateArrays save_state(std::size_t stages_done, double time) const;
+  void load_state(const StateArrays& state);
 };
 
 } // namespace bipot

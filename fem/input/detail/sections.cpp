@@ -169,8 +169,8 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
 
 ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
                                   Diagnostics& diag, const ParamSchema& schema,
-                                  const std::vector<std::string>& skip) {
-  ParameterSet params;
+                                  const std::vector<std::string>& skip, const ParameterSet* base) {
+  ParameterSet params = base ? *base : ParameterSet{};
   if (!node.IsMap()) {
     diag.error(node, path, "expected a map of parameters, got " + describe_node(node));
     return params;
@@ -374,12 +374,19 @@ ContactSolverSpec read_contact_solver(const YamlMap& top) {
 
 OutputSpec read_output(const YamlMap& top) {
   OutputSpec out;
-  YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every"});
+  YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every", "checkpoint"});
   if (!m.valid()) return out;
   if (m.string("directory", out.directory)) out.where = m.where("directory");
   m.boolean("vtk", out.vtk);
   if (m.integer("every", out.every) && out.every < 1)
     m.error("every", "value " + std::to_string(out.every) + " is out of range [1, inf)");
+  if (m.has("checkpoint")) {
+    const YamlMap c(m.node("checkpoint"), m.path("checkpoint"), m.diag(), {"after"});
+    out.checkpoint_where = c.where("after");
+    if (c.valid() && c.strings("after", out.checkpoint_after, true) && c.has("after") &&
+        out.checkpoint_after.empty())
+      c.error("after", "expected a non-empty list of stage names");
+  }
   return out;
 }
 

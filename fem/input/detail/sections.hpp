@@ -14,7 +14,12 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
 /// The displacement components of a kinematics by index ("x", "y" / "r", "z" / "x", "y", "z").
 const std::vector<std::string>& component_names(const std::string& kinematics);
 
-std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics);
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics,
+                                   const std::vector<InterfaceSpec>& interfaces);
+/// A stage's `interfaces:` map (law or parameter changes); `active` holds each interface's
+/// law and parameters in force before the stage and is updated.
+void read_stage_interfaces(const YamlMap& stage, const std::vector<InterfaceSpec>& interfaces,
+                           std::vector<InterfaceLawChangeSpec>& active, StageSpec& st);
 /// Cross-section rules of path-following stages (need the contact solver and interfaces).
 void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag);
 OutputSpec read_output(const YamlMap& top);
@@ -36,9 +41,10 @@ ContactSolverSpec read_contact_solver(const YamlMap& top);
 ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
                              const ParamSchema& schema, const std::vector<std::string>& skip);
 
-/// Same for a map node already in hand.
+/// Same for a map node already in hand; the keys it gives are set over `base` if not null.
 ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
                                   Diagnostics& diag, const ParamSchema& schema,
-                                  const std::vector<std::string>& skip);
+                                  const std::vector<std::string>& skip,
+                                  const ParameterSet* base = nullptr);
 
 } // namespace bipot::input

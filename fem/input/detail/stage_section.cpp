@@ -146,7 +146,8 @@ void read_control(const YamlMap& m, StageSpec& st) {
 
 } // namespace
 
-std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics) {
+std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics,
+                                   const std::vector<InterfaceSpec>& interfaces) {
   std::vector<StageSpec> out;
   const std::string expected = "expected a non-empty list of stages";
   if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
@@ -156,8 +157,12 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
   const auto entries = list_entries(
       top, "stages",
       {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads",
-       "interface_gaps", "obstacle_displacements", "rigid_bodies", "control", "output_at"},
+       "interface_gaps", "interfaces", "obstacle_displacements", "rigid_bodies", "control",
+       "output_at"},
       expected);
+  std::vector<InterfaceLawChangeSpec> active;
+  for (const InterfaceSpec& f : interfaces)
+    active.push_back({f.name, f.law, f.parameters, f.where});
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -177,6 +182,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("rigid_bodies")) read_stage_rigid_bodies(m, kinematics, st);
     if (m.has("obstacle_displacements"))
       read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
+    if (m.has("interfaces")) read_stage_interfaces(m, interfaces, active, st);
     if (m.has("control")) read_control(m, st);
     if (m.reals("output_at", st.output_at) && m.has("output_at")) {
       for (std::size_t k = 0; k < st.output_at.size(); ++k) {

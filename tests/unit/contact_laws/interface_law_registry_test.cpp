@@ -66,9 +66,26 @@ TEST(InterfaceLawRegistry, CreatesEachLawWithDefaults) {
   const auto tied = interface_laws().create("perfect_bonding", ParameterSet{});
   EXPECT_EQ(tied->name(), "perfect_bonding");
   EXPECT_TRUE(tied->is_tied());
-  // A tied law is eliminated by the solver; evaluating it is a programming error.
-  const InterfaceState old = initial_state(*tied, 2);
-  EXPECT_THROW(evaluate(*tied, old, old.jump, old.r, 1.0, 1.0), Error);
+  // On split pairs (bonded in some stages only) a tied law is the equality multiplier of
+  // evaluate_tie(): r_new = r − ρ (jump − old.jump), no cone, the traction is r_new, β = 1.
+  InterfaceState old = initial_state(*tied, 2);
+  old.jump << 1e-3, -2e-3;
+  LocalVector jump(2), r_in(2);
+  jump << 1.5e-3, -1e-3;
+  r_in << 40.0, -250.0; // outside any cone: a tie takes any traction
+  const double rho = 1e4;
+  InterfaceResponseDerivatives d;
+  const InterfaceResponse out = evaluate(*tied, old, jump, r_in, 1.0, rho, &d);
+  EXPECT_EQ(out.beta, 1.0);
+  EXPECT_EQ(out.status, ContactStatus::Stick);
+  EXPECT_NEAR(out.traction(0), 40.0 - rho * 0.5e-3, 1e-12);
+  EXPECT_NEAR(out.traction(1), -250.0 - rho * 1e-3, 1e-12);
+  EXPECT_EQ(out.r, out.traction);
+  // Its fixed point r_new = r is the held jump.
+  EXPECT_EQ(evaluate(*tied, old, old.jump, r_in, 1.0, rho).r, r_in);
+  // Generalized derivatives: ∂r/∂jump = −ρ I, ∂r/∂r = I (linear map, exact).
+  EXPECT_EQ(d.dt_djump, (-rho * LocalMatrix::Identity(2, 2)).eval());
+  EXPECT_EQ(d.dr_dr, LocalMatrix::Identity(2, 2));
 }
 
 TEST(InterfaceLawRegistry, OutOfRangeValuesNameKeyAndInterval) {
