@@ -22,6 +22,19 @@ SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& d
                        std::to_string(c) + ")");
     qp_offset_.push_back(qp_offset_.back() + values_for(mesh_.cell_types[c]).num_points());
   }
+  Index num_state = 0;
+  std::vector<Index> offsets = {0};
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index c = owned_cells_[k];
+    num_state += (qp_offset_[k + 1] - qp_offset_[k]) *
+                 materials_[mesh_.cell_regions[c]]->num_state_variables();
+    offsets.push_back(num_state);
+  }
+  if (num_state > 0) {
+    state_offset_ = std::move(offsets);
+    state_.assign(num_state, 0.0);
+    trial_state_ = state_;
+  }
   const std::size_t n = owned_cells_.size() * nv_;
   cell_strain_.assign(n, 0.0);
   cell_stress_.assign(n, 0.0);
@@ -82,6 +95,9 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
     K_e.assign(static_cast<std::size_t>(nd) * nd, 0.0);
     B.resize(nv_, nd);
     const Material& mat = *materials_[mesh_.cell_regions[c]];
+    const int ns = mat.num_state_variables();
+    const double* old_state = ns > 0 ? &state_[state_offset_[k]] : nullptr;
+    double* new_state = ns > 0 ? &trial_state_[state_offset_[k]] : nullptr;
     Eigen::Map<Eigen::VectorXd> f(f_e.data(), nd);
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
         K_e.data(), nd, nd);
@@ -94,7 +110,8 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
       const Index p = qp_offset_[k] + q;
       ev.strain_displacement(q, B);
       eps = B * Eigen::Map<const Eigen::VectorXd>(u_e.data(), nd);
-      mat.update(eps, nullptr, sig, D, nullptr);
+      mat.update(eps, old_state ? old_state + q * ns : nullptr, sig, D,
+                 new_state ? new_state + q * ns : nullptr);
       if (point_stress) point_stress(p, sig);
       Voigt total = sig;
       if (!sigma0_.empty()) total += Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
@@ -137,6 +154,7 @@ void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVec
 void SolidAssembler::commit() {
   cell_strain_ = trial_cell_strain_;
   cell_stress_ = trial_cell_stress_;
+  state_ = trial_state_;
 }
 
 void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {

@@ -38,7 +38,9 @@ public:
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
-  /// Accepts the last trial state (end of a converged increment).
+  /// Accepts the last trial state (end of a converged increment): cell averages and the
+  /// materials' internal variables. Until then every assembly starts again from the
+  /// committed internal variables, so a failed (cut-back) increment leaves no trace.
   void commit();
 
   /// Displacement reset that keeps stresses (geostatic stage): the stress of `u` at every
@@ -52,6 +54,9 @@ public:
   /// cells, Voigt components interleaved.
   void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
   int voigt_size() const { return nv_; }
+  /// Committed internal variables of every quadrature point of the owned cells, in cell then
+  /// point order, num_state_variables() of its material each; empty if no material has any.
+  const std::vector<double>& committed_state() const { return state_; }
 
 private:
   ElementValues& values_for(CellType type);
@@ -73,6 +78,10 @@ private:
   std::vector<double> sigma0_;   ///< initial stress per point (nv each); empty = zero
   std::vector<double> cell_strain_, cell_stress_;             ///< committed averages
   std::vector<double> trial_cell_strain_, trial_cell_stress_; ///< of the last assembly
+  // Internal variables, only for materials that have some (a linear model stores nothing):
+  // state_offset_[k] is the first value of owned cell k, its points following each other.
+  std::vector<Index> state_offset_;
+  std::vector<double> state_, trial_state_; ///< committed; of the last assembly
 };
 
 } // namespace bipot

