@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -161,8 +162,9 @@ const std::string joint =
 
 struct Histories {
   std::vector<std::vector<double>> residuals; ///< per increment
-  std::vector<double> u;
-  double force = 0; ///< footing reaction, y
+  std::vector<int> iterations;                ///< per increment
+  std::vector<double> u, stress;              ///< final; committed cell stresses
+  double force = 0;                           ///< footing reaction, y
   int cutbacks = 0;
 };
 
@@ -173,9 +175,13 @@ Histories run_footing(const std::string& text, AnalysisOptions options = {}) {
   Histories h;
   analysis.run([&](const StepReport& r) {
     h.residuals.push_back(r.residual_history);
+    h.iterations.push_back(r.iterations);
     h.cutbacks += r.cutbacks;
   });
   h.u = analysis.displacement();
+  std::vector<Index> cells;
+  std::vector<double> strain;
+  analysis.cell_results(cells, strain, h.stress);
   h.force = analysis.reaction("footing")[1];
   return h;
 }
@@ -219,6 +225,31 @@ TEST(PlasticNewton, QuadraticGeneralizedNewtonOuterLoop) {
   check_quadratic(s, "semismooth_newton", false);
   std::printf("footing force: generalized %.12g, semismooth %.12g\n", h.force, s.force);
   EXPECT_NEAR(h.force, s.force, 1e-8 * std::abs(s.force));
+}
+
+// A failed increment leaves the committed state untouched: the footing pushed in one
+// increment with too few Newton iterations allowed fails, is halved, and must then give
+// exactly the run planned with two increments (same starting points, same iterations).
+TEST(PlasticState, CutBackEqualsPlannedSubIncrements) {
+  const Histories planned = run_footing(footing_input("", "", 0.02, 2));
+  const Histories whole = run_footing(footing_input("", "", 0.02, 1));
+  const int needed = *std::max_element(planned.iterations.begin(), planned.iterations.end());
+  std::printf("iterations: one increment %d, two increments at most %d\n", whole.iterations[0],
+              needed);
+  ASSERT_GT(whole.iterations[0], needed); // otherwise nothing would be cut back
+  AnalysisOptions options;
+  options.max_iterations = needed;
+  const Histories cut = run_footing(footing_input("", "", 0.02, 1), options);
+  EXPECT_EQ(cut.cutbacks, 1);
+  ASSERT_EQ(cut.u.size(), planned.u.size());
+  double du = 0, ds = 0;
+  for (std::size_t i = 0; i < cut.u.size(); ++i)
+    du = std::max(du, std::abs(cut.u[i] - planned.u[i]));
+  for (std::size_t i = 0; i < cut.stress.size(); ++i)
+    ds = std::max(ds, std::abs(cut.stress[i] - planned.stress[i]));
+  std::printf("cut-back vs planned: max |du| %.3e, max |dstress| %.3e\n", du, ds);
+  EXPECT_LE(du, 1e-12 * 0.02);
+  EXPECT_LE(ds, 1e-12 * sy);
 }
 
 } // namespace
