@@ -4,13 +4,21 @@
 
 namespace bipot {
 
-ParamSchema LinearElastic::schema() {
-  ParamSchema s("linear_elastic", "isotropic linear elasticity (Hooke's law)");
+void add_hooke_keys(ParamSchema& s) {
   s.real("youngs_modulus", "kPa", "Young's modulus E").positive();
   s.real("poissons_ratio", "", "Poisson's ratio nu").greater_than(-1.0).less_than(0.5);
+}
+
+void add_unit_weight_key(ParamSchema& s) {
   s.real("unit_weight", "kN/m^3", "weight per unit volume, used by gravity loads")
       .non_negative()
       .with_default(0.0);
+}
+
+ParamSchema LinearElastic::schema() {
+  ParamSchema s("linear_elastic", "isotropic linear elasticity (Hooke's law)");
+  add_hooke_keys(s);
+  add_unit_weight_key(s);
   return s;
 }
 
@@ -24,8 +32,7 @@ LinearElastic::LinearElastic(double youngs_modulus, double poissons_ratio, doubl
     throw InputError("linear_elastic: need youngs_modulus > 0 and -1 < poissons_ratio < 0.5");
 }
 
-VoigtMatrix LinearElastic::elasticity_matrix(int n) const {
-  const double E = youngs_modulus_, nu = poissons_ratio_;
+VoigtMatrix isotropic_elasticity(double E, double nu, int n) {
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
   const double G = E / (2 * (1 + nu));
   VoigtMatrix D = VoigtMatrix::Zero(n, n);
@@ -39,8 +46,12 @@ VoigtMatrix LinearElastic::elasticity_matrix(int n) const {
   return D;
 }
 
-void LinearElastic::update(const Voigt& strain, const double*, Voigt& stress, VoigtMatrix& tangent,
-                           double*) const {
+VoigtMatrix LinearElastic::elasticity_matrix(int n) const {
+  return isotropic_elasticity(youngs_modulus_, poissons_ratio_, n);
+}
+
+void LinearElastic::update(const Voigt& strain, const Voigt&, const double*, Voigt& stress,
+                           VoigtMatrix& tangent, double*) const {
   tangent = elasticity_matrix(static_cast<int>(strain.size()));
   stress = tangent * strain;
 }

@@ -9,6 +9,16 @@
 
 namespace bipot {
 
+/// Hooke's matrix for Voigt size 4 (2D) or 6 (3D), engineering shear strains: λ on the
+/// normal block, 2G added on its diagonal, G on the shear diagonal.
+VoigtMatrix isotropic_elasticity(double youngs_modulus, double poissons_ratio, int voigt_size);
+
+/// Adds youngs_modulus (kPa, > 0) and poissons_ratio ((-1, 0.5)): shared by every isotropic
+/// material's schema so the keys read the same everywhere.
+void add_hooke_keys(ParamSchema& schema);
+/// Adds unit_weight (kN/m³, ≥ 0, default 0).
+void add_unit_weight_key(ParamSchema& schema);
+
 class LinearElastic : public Material {
 public:
   /// Keys: youngs_modulus (kPa, > 0), poissons_ratio ((-1, 0.5)), unit_weight (kN/m³, ≥ 0).
@@ -18,8 +28,9 @@ public:
   LinearElastic(double youngs_modulus, double poissons_ratio, double unit_weight = 0.0);
 
   std::string name() const override { return "linear_elastic"; }
-  void update(const Voigt& strain, const double* old_state, Voigt& stress, VoigtMatrix& tangent,
-              double* new_state) const override;
+  /// Hooke's law on the strain alone: the initial stress does not change the response.
+  void update(const Voigt& strain, const Voigt& initial_stress, const double* old_state,
+              Voigt& stress, VoigtMatrix& tangent, double* new_state) const override;
   double unit_weight() const override { return unit_weight_; }
   bool is_linear() const override { return true; }
 

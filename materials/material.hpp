@@ -18,15 +18,25 @@ public:
   /// The YAML name (also the file stem).
   virtual std::string name() const = 0;
 
-  /// Number of internal variables stored per quadrature point.
+  /// Number of internal variables stored per quadrature point (the same for 2D and 3D).
   virtual int num_state_variables() const { return 0; }
 
   /// Stress and consistent tangent dσ/dε for the total strain `strain` (size 4 in 2D, 6 in
   /// 3D) given the converged internal variables `old_state`; writes the updated internal
-  /// variables to `new_state`. The stress excludes any initial (geostatic) stress, which the
-  /// assembly adds.
-  virtual void update(const Voigt& strain, const double* old_state, Voigt& stress,
-                      VoigtMatrix& tangent, double* new_state) const = 0;
+  /// variables to `new_state` and never writes `old_state`, so the caller commits an
+  /// increment by copying new_state over old_state (and cuts back by not doing so).
+  /// `initial_stress` σ0 (same size as `strain`, zero when there is none) is the stress at
+  /// zero strain, e.g. geostatic: a yield criterion must see the total stress σ0 + σ.
+  /// The returned stress still EXCLUDES σ0, which the assembly adds.
+  virtual void update(const Voigt& strain, const Voigt& initial_stress, const double* old_state,
+                      Voigt& stress, VoigtMatrix& tangent, double* new_state) const = 0;
+
+  /// Number of point-wise diagnostics (for VTK output) derived from the internal variables.
+  virtual int num_output_fields() const { return 0; }
+  /// Name of diagnostic `i` in [0, num_output_fields()), snake_case.
+  virtual std::string output_field_name(int /*i*/) const { return {}; }
+  /// Writes the num_output_fields() diagnostics of the internal variables `state` to `values`.
+  virtual void output(const double* /*state*/, double* /*values*/) const {}
 
   /// True if the tangent does not depend on the strain or state: the analysis then keeps
   /// one matrix (and preconditioner) for as long as the constrained DOFs do not change.

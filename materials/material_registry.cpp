@@ -1,6 +1,7 @@
 #include "materials/material_registry.hpp"
 
 #include "materials/linear_elastic.hpp"
+#include "materials/von_mises.hpp"
 
 namespace bipot {
 
@@ -12,6 +13,7 @@ template <class T> void add(Registry<Material>& r) {
 
 void register_materials(Registry<Material>& registry) {
   add<LinearElastic>(registry);
+  add<VonMises>(registry);
 }
 
 const Registry<Material>& materials() {

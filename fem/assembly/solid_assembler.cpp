@@ -79,7 +79,7 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
   std::vector<Index> cell_dofs;
   std::vector<double> u_e, f_e, K_e;
   Eigen::MatrixXd B, DB;
-  Voigt eps, sig;
+  Voigt eps, sig, sig0;
   VoigtMatrix D;
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
@@ -110,11 +110,14 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
       const Index p = qp_offset_[k] + q;
       ev.strain_displacement(q, B);
       eps = B * Eigen::Map<const Eigen::VectorXd>(u_e.data(), nd);
-      mat.update(eps, old_state ? old_state + q * ns : nullptr, sig, D,
+      if (sigma0_.empty())
+        sig0.setZero(nv_);
+      else
+        sig0 = Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
+      mat.update(eps, sig0, old_state ? old_state + q * ns : nullptr, sig, D,
                  new_state ? new_state + q * ns : nullptr);
       if (point_stress) point_stress(p, sig);
-      Voigt total = sig;
-      if (!sigma0_.empty()) total += Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
+      const Voigt total = sig + sig0;
       for (int i = 0; i < nv_; ++i) {
         avg_strain[i] += share * eps(i);
         avg_stress[i] += share * total(i);

@@ -22,7 +22,8 @@ public:
   std::string name() const override { return "test_j2"; }
   int num_state_variables() const override { return 7; } // room for 6 Voigt + ē
 
-  void update(const Voigt& strain, const double* old_state, Voigt& stress, VoigtMatrix& tangent,
+  void update(const Voigt& strain, const Voigt&, const double* old_state, Voigt& stress,
+              VoigtMatrix& tangent,
               double* new_state) const override {
     const int n = static_cast<int>(strain.size());
     const double zero[7] = {0, 0, 0, 0, 0, 0, 0};

@@ -13,7 +13,7 @@ int main() {
   bipot::Voigt eps = bipot::Voigt::Zero(6), sig;
   eps(0) = 1e-3;
   bipot::VoigtMatrix D;
-  steel->update(eps, nullptr, sig, D, nullptr);
+  steel->update(eps, bipot::Voigt::Zero(eps.size()), nullptr, sig, D, nullptr);
   // sigma_xx = (lambda + 2G) eps_xx with lambda = G = 8e7 for nu = 0.25: 2.4e5.
   bipot::ElementValues ev(bipot::CellType::Quad4, bipot::Kinematics::PlaneStrain, 2);
   const double square[12] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 0, 2, 0};

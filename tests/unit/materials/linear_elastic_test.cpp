@@ -22,7 +22,7 @@ TEST(LinearElastic, UniaxialStressGivesYoungsModulusAndPoisson3D) {
   eps << s / E, -nu * s / E, -nu * s / E, 0, 0, 0;
   Voigt sig;
   VoigtMatrix D;
-  m.update(eps, nullptr, sig, D, nullptr);
+  m.update(eps, Voigt::Zero(eps.size()), nullptr, sig, D, nullptr);
   EXPECT_NEAR(sig(0), s, tol * s);
   for (int i = 1; i < 6; ++i)
     EXPECT_NEAR(sig(i), 0.0, tol * s);
@@ -36,7 +36,7 @@ TEST(LinearElastic, PureShearGivesShearModulus) {
     eps(3) = 1e-3; // engineering shear strain gamma_xy
     Voigt sig;
     VoigtMatrix D;
-    m.update(eps, nullptr, sig, D, nullptr);
+    m.update(eps, Voigt::Zero(eps.size()), nullptr, sig, D, nullptr);
     EXPECT_NEAR(sig(3), G * 1e-3, tol * G * 1e-3);
     EXPECT_NEAR(sig(0), 0.0, tol * G * 1e-3);
   }
@@ -49,7 +49,7 @@ TEST(LinearElastic, PlaneStrainOutOfPlaneStressIsNuTimesInPlaneSum) {
   eps << 1e-3, -2e-4, 0.0, 0.0;
   Voigt sig;
   VoigtMatrix D;
-  m.update(eps, nullptr, sig, D, nullptr);
+  m.update(eps, Voigt::Zero(eps.size()), nullptr, sig, D, nullptr);
   // Plane strain: sigma_zz = nu (sigma_xx + sigma_yy).
   EXPECT_NEAR(sig(2), nu * (sig(0) + sig(1)), tol * std::abs(sig(0)));
 }
@@ -61,7 +61,7 @@ TEST(LinearElastic, BulkModulusUnderHydrostaticStrain) {
   eps << 1e-4, 1e-4, 1e-4, 0, 0, 0;
   Voigt sig;
   VoigtMatrix D;
-  m.update(eps, nullptr, sig, D, nullptr);
+  m.update(eps, Voigt::Zero(eps.size()), nullptr, sig, D, nullptr);
   // Mean stress = K * volumetric strain.
   EXPECT_NEAR((sig(0) + sig(1) + sig(2)) / 3, K * 3e-4, tol * K * 3e-4);
   // The tangent is symmetric and positive definite.
