@@ -6,6 +6,8 @@
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
 
+#include <algorithm>
+
 namespace bipot {
 
 SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs,
@@ -174,6 +176,38 @@ void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
   // Stresses are unchanged and the strains restart from zero.
   std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
   trial_cell_strain_ = cell_strain_;
+}
+
+std::vector<std::string> SolidAssembler::output_field_names() const {
+  std::vector<std::string> names;
+  for (const Material* m : materials_)
+    for (int i = 0; m && i < m->num_output_fields(); ++i)
+      if (std::find(names.begin(), names.end(), m->output_field_name(i)) == names.end())
+        names.push_back(m->output_field_name(i));
+  return names;
+}
+
+std::vector<double> SolidAssembler::cell_output_fields() const {
+  const std::vector<std::string> names = output_field_names();
+  const std::size_t nf = names.size();
+  std::vector<double> out(owned_cells_.size() * nf, 0.0), point;
+  if (nf == 0 || state_.empty()) return out;
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Material& mat = *materials_[mesh_.cell_regions[owned_cells_[k]]];
+    const int ns = mat.num_state_variables(), no = mat.num_output_fields();
+    if (ns == 0 || no == 0) continue;
+    std::vector<std::size_t> column(no);
+    for (int i = 0; i < no; ++i)
+      column[i] = std::find(names.begin(), names.end(), mat.output_field_name(i)) - names.begin();
+    const Index points = qp_offset_[k + 1] - qp_offset_[k];
+    point.resize(no);
+    for (Index q = 0; q < points; ++q) {
+      mat.output(&state_[state_offset_[k] + q * ns], point.data());
+      for (int i = 0; i < no; ++i)
+        out[k * nf + column[i]] += point[i] / points;
+    }
+  }
+  return out;
 }
 
 void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {

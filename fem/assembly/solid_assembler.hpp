@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bipot {
@@ -54,6 +55,13 @@ public:
   /// cells, Voigt components interleaved.
   void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
   int voigt_size() const { return nv_; }
+  /// Names of the materials' output fields (plastic strain, yield indicator, ...): the union
+  /// over every material of the model, in region order, so that all ranks agree.
+  std::vector<std::string> output_field_names() const;
+  /// Committed cell averages of the output fields, one value per owned cell and field
+  /// (fields interleaved, in the order of output_field_names()); 0 in cells whose material
+  /// does not have the field.
+  std::vector<double> cell_output_fields() const;
   /// Committed internal variables of every quadrature point of the owned cells, in cell then
   /// point order, num_state_variables() of its material each; empty if no material has any.
   const std::vector<double>& committed_state() const { return state_; }

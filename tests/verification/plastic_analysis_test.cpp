@@ -1,17 +1,22 @@
-// The analysis with a material that has internal variables (tests/support/test_j2_material.hpp,
-// von Mises with linear hardening): drained triaxial compression against its closed form,
-// a failed increment leaving the committed state untouched, a cut-back run equal to the run
-// planned with the sub-increments, and Newton's quadratic convergence with the consistent
-// tangent, with and without the condensed generalized Newton.
-#include "../support/test_j2_material.hpp"
+// The analysis with a material that has internal variables (von_mises with linear hardening):
+// drained triaxial compression against its closed form, a failed increment leaving the committed
+// state untouched, a cut-back run equal to the run planned with the sub-increments, and Newton's
+// quadratic convergence with the consistent tangent, with and without the condensed generalized
+// Newton.
 #include "fem/analysis/model.hpp"
+#include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/assembly/solid_assembler.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 
+#include "../support/scratch_dir.hpp"
+
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
 
 #include <algorithm>
 #include <cmath>
@@ -28,13 +33,11 @@ std::string exact(double v) {
   return buf;
 }
 
-// Replaces every region's material by the test J2 material (build_model made it linear
-// elastic from the YAML: only the registered materials can be named there).
-void make_plastic(Model& model, double hardening = H) {
-  model.materials.clear();
-  model.materials.push_back(std::make_unique<test::TestJ2Material>(E, nu, sy, hardening));
-  for (auto& m : model.material_of_region)
-    m = model.materials.back().get();
+// The von Mises material of these tests (yield stress 20 kPa) with hardening modulus H.
+std::string von_mises(double hardening) {
+  return "{type: von_mises, youngs_modulus: 1.0e4, poissons_ratio: 0.3, yield_stress: 20.0, "
+         "hardening_modulus: " +
+         exact(hardening) + "}";
 }
 
 // One axisymmetric quad4 cell, r in [0, R], z in [0, 1]: confined by p on its side and top,
@@ -44,8 +47,9 @@ std::string triaxial_input(double p, double top, int increments, double unload) 
   return "kinematics: axisymmetric\nmesh:\n  blocks:\n    cell: quad4\n"
          "    x: {breaks: [0.0, 0.5], cells: [1]}\n    y: {breaks: [0.0, 1.0], cells: [1]}\n"
          "    regions: [sample]\n"
-         "materials:\n  sample: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: "
-         "0.3}\n"
+         "materials:\n  sample: " +
+         von_mises(H) +
+         "\n"
          "linear_solver: {method: direct}\n"
          "stages:\n"
          "  - name: confine\n    boundary_conditions:\n"
@@ -91,8 +95,8 @@ TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
   ASSERT_GT(ebar, 5 * sy / E); // well into the plastic range
   // Unloading by q/E axial strain is elastic and brings σ_a back to −p.
   const double unload = top + q / E;
-  Model model = build_model(read_problem_text(triaxial_input(p, top, 4, unload), "triaxial.yaml"));
-  make_plastic(model);
+  const Model model =
+      build_model(read_problem_text(triaxial_input(p, top, 4, unload), "triaxial.yaml"));
   StaticAnalysis analysis(model);
   // Lateral strain: elastic (σ_r − ν(σ_a + σ_θ))/E plus the plastic ē/2 (isochoric flow).
   const double eps_r = (-p - nu * (sa - p)) / E + 0.5 * ebar;
@@ -102,9 +106,19 @@ TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
     return 0.0;
   };
   int checked = 0;
+  // The material's output fields (cell averages): ē and the plastic flag.
+  auto output = [&](const std::string& name) {
+    const auto names = analysis.output_field_names();
+    const auto values = analysis.cell_output_fields();
+    const auto it = std::find(names.begin(), names.end(), name);
+    return it == names.end() ? -1.0 : values[it - names.begin()];
+  };
   analysis.run([&](const StepReport& r) {
     if (!r.stage_end) return;
     const double force = analysis.reaction("top")[1];
+    EXPECT_NEAR(output("equivalent_plastic_strain"), r.stage == "confine" ? 0.0 : ebar, 1e-8 * ebar)
+        << r.stage;
+    EXPECT_EQ(output("plastic"), r.stage == "shear" ? 1.0 : 0.0) << r.stage;
     if (r.stage == "shear") {
       const double expected = sa * M_PI * R * R;
       std::printf("triaxial peak: top reaction %.12g, closed form %.12g\n", force, expected);
@@ -121,6 +135,21 @@ TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
     }
   });
   EXPECT_EQ(checked, 2);
+}
+
+// The VTK series carries the materials' output fields as cell data.
+TEST(PlasticOutput, VtkHasMaterialFields) {
+  test::ScratchDir dir("plastic_output");
+  const Model model =
+      build_model(read_problem_text(triaxial_input(50.0, -0.02, 2, -0.01), "triaxial.yaml"));
+  ResultWriter writer(model, 0, 1, dir.path.string());
+  StaticAnalysis analysis(model, {}, &writer);
+  analysis.run();
+  std::ifstream in(dir.path / "solution_0003_0.vtu");
+  ASSERT_TRUE(in.good());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const std::string name : {"equivalent_plastic_strain", "plastic", "stress"})
+    EXPECT_NE(text.find("Name=\"" + name + "\""), std::string::npos) << name;
 }
 
 } // namespace
@@ -141,8 +170,9 @@ std::string footing_input(const std::string& interface, const std::string& solve
          "    regions: [lower, lower, upper, upper]\n"
          "  sets:\n    footing: {min: [0.0, 1.0], max: [0.5, 1.0]}\n"
          "materials:\n"
-         "  lower: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
-         "  upper: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
+         "  lower: " +
+         von_mises(100.0) + "\n  upper: " + von_mises(100.0) +
+         "\n"
          "linear_solver: {method: direct}\n" +
          interface + solver +
          "stages:\n  - name: load\n    increments: " + std::to_string(increments) +
@@ -169,8 +199,7 @@ struct Histories {
 };
 
 Histories run_footing(const std::string& text, AnalysisOptions options = {}) {
-  Model model = build_model(read_problem_text(text, "footing.yaml"));
-  make_plastic(model, 100.0);
+  const Model model = build_model(read_problem_text(text, "footing.yaml"));
   StaticAnalysis analysis(model, options);
   Histories h;
   analysis.run([&](const StepReport& r) {
@@ -199,9 +228,10 @@ int check_quadratic(const Histories& h, const std::string& what, bool expect = t
     std::printf("\n");
     for (std::size_t k = 0; k + 1 < r.size(); ++k) {
       if (r[k] > 1e-3 || r[k + 1] < 1e-13) continue;
-      if (expect)
+      if (expect) {
         EXPECT_LE(r[k + 1], C * r[k] * r[k])
             << what << " increment " << i + 1 << " iteration " << k;
+      }
       ++pairs;
     }
   }

@@ -1,10 +1,9 @@
-// Limit analysis with the consistent-tangent Newton, against closed forms (tests/support's
-// von Mises material; in plane strain at collapse the out-of-plane plastic strain rate
+// Limit analysis with the consistent-tangent Newton, against closed forms (von_mises; in
+// plane strain at collapse the out-of-plane plastic strain rate
 // vanishes, s_zz = 0, and von Mises is Tresca with c = σ_y/√3):
 // - a thick-walled cylinder under internal pressure (Hill 1950, ch. V): pressure against
 //   plastic radius, pressure against the outer expansion, and the limit pressure;
 // - a smooth strip footing on weightless Tresca soil: Prandtl's bearing capacity (2 + π) c.
-#include "../support/test_j2_material.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -16,13 +15,6 @@
 
 namespace bipot {
 namespace {
-
-void make_plastic(Model& model, double E, double nu, double yield_stress) {
-  model.materials.clear();
-  model.materials.push_back(std::make_unique<test::TestJ2Material>(E, nu, yield_stress));
-  for (auto& m : model.material_of_region)
-    m = model.materials.back().get();
-}
 
 std::string exact(double v) {
   char buf[32];
@@ -60,7 +52,8 @@ std::string cylinder_input(const std::string& load, int increments) {
   return "kinematics: axisymmetric\nmesh:\n  blocks:\n    cell: quad8\n"
          "    x: {breaks: [1.0, 2.0], cells: [100]}\n    y: {breaks: [0.0, 0.02], cells: [1]}\n    "
          "regions: [wall]\n"
-         "materials:\n  wall: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
+         "materials:\n  wall: {type: von_mises, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
+         "yield_stress: 20.0}\n"
          "linear_solver: {method: direct}\n"
          "stages:\n  - name: pressurise\n    increments: " +
          std::to_string(increments) +
@@ -80,8 +73,7 @@ TEST(ThickCylinder, HillPressureExpansionAndPlasticRadius) {
   const double p_end = 0.9 * hill.limit();
   const std::string text = cylinder_input(
       "    loads:\n      - {type: pressure, set: left, value: " + exact(p_end) + "}\n", 9);
-  Model model = build_model(read_problem_text(text, "cylinder.yaml"));
-  make_plastic(model, E, nu, sy);
+  const Model model = build_model(read_problem_text(text, "cylinder.yaml"));
   StaticAnalysis analysis(model);
   Index outer = -1;
   for (Index k = 0; k < model.mesh.num_nodes(); ++k)
@@ -121,8 +113,7 @@ TEST(ThickCylinder, HillPressureExpansionAndPlasticRadius) {
 // becomes fully plastic), the pressure is the bore's reaction over its area 2π a h.
 TEST(ThickCylinder, LimitPressure) {
   const std::string text = cylinder_input("      - {set: left, component: r, value: 0.02}\n", 20);
-  Model model = build_model(read_problem_text(text, "cylinder_limit.yaml"));
-  make_plastic(model, E, nu, sy);
+  const Model model = build_model(read_problem_text(text, "cylinder_limit.yaml"));
   StaticAnalysis analysis(model);
   analysis.run();
   const double p = std::abs(analysis.reaction("left")[0]) / (2 * M_PI * hill.a * 0.02);
@@ -144,7 +135,8 @@ TEST(StripFooting, PrandtlBearingCapacity) {
       "    y: {breaks: [0.0, 1.5, 2.5], cells: [4, 16], grading: [0.85, 1.0]}\n"
       "    regions: [soil, soil, soil, soil, soil, soil, soil, soil]\n"
       "  sets:\n    footing: {min: [0.0, 2.5], max: [0.5, 2.5]}\n"
-      "materials:\n  soil: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"
+      "materials:\n  soil: {type: von_mises, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
+      "yield_stress: 17.320508075688772}\n" // sqrt(3) c
       "linear_solver: {method: direct}\n"
       "stages:\n  - name: load\n    increments: 20\n    boundary_conditions:\n"
       "      - {set: bottom, component: x, value: 0}\n"
@@ -152,8 +144,7 @@ TEST(StripFooting, PrandtlBearingCapacity) {
       "      - {set: left, component: x, value: 0}\n"
       "      - {set: right, component: x, value: 0}\n"
       "      - {set: footing, component: y, value: -0.05}\n";
-  Model model = build_model(read_problem_text(text, "footing.yaml"));
-  make_plastic(model, 1.0e4, 0.3, std::sqrt(3.0) * c);
+  const Model model = build_model(read_problem_text(text, "footing.yaml"));
   StaticAnalysis analysis(model);
   int iterations = 0, increments = 0;
   analysis.run([&](const StepReport& r) {
