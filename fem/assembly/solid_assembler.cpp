@@ -74,14 +74,16 @@ void SolidAssembler::set_initial_stress(
 
 // Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and
 // K_e = tangent (row-major), both sized num_dofs. Also records the trial cell averages and,
-// if `point_stress` is given, calls it with (point index, material stress) at every point.
+// if `point_stress` is given, calls it with (point index, strain of `u`, material stress,
+// whether the material has internal variables) at every point.
 template <class CellKernel>
-void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
-                          const std::function<void(Index, const Voigt&)>& point_stress) {
+void SolidAssembler::loop(
+    const std::vector<double>& u, CellKernel&& kernel,
+    const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress) {
   std::vector<Index> cell_dofs;
   std::vector<double> u_e, f_e, K_e;
   Eigen::MatrixXd B, DB;
-  Voigt eps, sig, sig0;
+  Voigt eps, eps_material, sig, sig0;
   VoigtMatrix D;
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
@@ -116,9 +118,12 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
         sig0.setZero(nv_);
       else
         sig0 = Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
-      mat.update(eps, sig0, old_state ? old_state + q * ns : nullptr, sig, D,
+      eps_material = eps;
+      if (ns > 0 && !strain_offset_.empty())
+        eps_material += Eigen::Map<const Eigen::VectorXd>(&strain_offset_[p * nv_], nv_);
+      mat.update(eps_material, sig0, old_state ? old_state + q * ns : nullptr, sig, D,
                  new_state ? new_state + q * ns : nullptr);
-      if (point_stress) point_stress(p, sig);
+      if (point_stress) point_stress(p, eps, sig, ns > 0);
       const Voigt total = sig + sig0;
       for (int i = 0; i < nv_; ++i) {
         avg_strain[i] += share * eps(i);
@@ -163,16 +168,26 @@ void SolidAssembler::commit() {
 }
 
 void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
-  if (sigma0_.empty()) sigma0_.assign(static_cast<std::size_t>(qp_offset_.back()) * nv_, 0.0);
-  std::vector<double> added(sigma0_.size(), 0.0);
+  const std::size_t n = static_cast<std::size_t>(qp_offset_.back()) * nv_;
+  if (sigma0_.empty()) sigma0_.assign(n, 0.0);
+  if (!state_.empty() && strain_offset_.empty()) strain_offset_.assign(n, 0.0);
+  std::vector<double> added(n, 0.0), strain(state_.empty() ? 0 : n, 0.0);
+  std::vector<bool> history(qp_offset_.back(), false);
   loop(
       u, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
-      [&](Index p, const Voigt& sig) {
+      [&](Index p, const Voigt& eps, const Voigt& sig, bool has_state) {
+        history[p] = has_state;
         for (int i = 0; i < nv_; ++i)
-          added[p * nv_ + i] = sig(i);
+          (has_state ? strain : added)[p * nv_ + i] = has_state ? eps(i) : sig(i);
       });
-  for (std::size_t i = 0; i < sigma0_.size(); ++i)
-    sigma0_[i] += added[i];
+  // Added after the loop, which reads both.
+  for (std::size_t p = 0; p < history.size(); ++p)
+    for (int i = 0; i < nv_; ++i) {
+      if (history[p])
+        strain_offset_[p * nv_ + i] += strain[p * nv_ + i];
+      else
+        sigma0_[p * nv_ + i] += added[p * nv_ + i];
+    }
   // Stresses are unchanged and the strains restart from zero.
   std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
   trial_cell_strain_ = cell_strain_;

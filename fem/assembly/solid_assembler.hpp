@@ -44,8 +44,12 @@ public:
   /// committed internal variables, so a failed (cut-back) increment leaves no trace.
   void commit();
 
-  /// Displacement reset that keeps stresses (geostatic stage): the stress of `u` at every
-  /// quadrature point is added to the initial stress, and the caller then zeroes `u`.
+  /// Displacement reset that keeps stresses (geostatic stage); the caller then zeroes `u`.
+  /// Materials without internal variables: the stress of `u` at every quadrature point is
+  /// added to the initial stress. Materials with internal variables keep their whole history
+  /// instead: the strain of `u` becomes a per-point offset added to the strain they are
+  /// given, so their plastic strain, hardening and stress carry over unchanged while the
+  /// displacements and the output strains restart from zero (docs/theory.md).
   void absorb_stress_into_initial(const std::vector<double>& u);
 
   const std::vector<Index>& owned_cells() const { return owned_cells_; }
@@ -70,7 +74,7 @@ private:
   ElementValues& values_for(CellType type);
   template <class CellKernel>
   void loop(const std::vector<double>& u, CellKernel&& kernel,
-            const std::function<void(Index, const Voigt&)>& point_stress = {});
+            const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress = {});
 
   const Mesh& mesh_;
   Kinematics kin_;
@@ -90,6 +94,9 @@ private:
   // state_offset_[k] is the first value of owned cell k, its points following each other.
   std::vector<Index> state_offset_;
   std::vector<double> state_, trial_state_; ///< committed; of the last assembly
+  /// Per point (nv each), points of materials with internal variables only: the strain at
+  /// the last displacement reset, added to what those materials see. Empty until a reset.
+  std::vector<double> strain_offset_;
 };
 
 } // namespace bipot
