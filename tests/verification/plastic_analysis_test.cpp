@@ -324,3 +324,43 @@ TEST(PlasticState, CutBackEqualsPlannedSubIncrements) {
 
 } // namespace
 } // namespace bipot
+
+namespace bipot {
+namespace {
+
+// Geostatic stress (γ = 20 kN/m³, K0 = 0.3) of a column 2 m deep: at its base σ_v = −40,
+// σ_h = σ_zz = −12 kPa, a von Mises stress of 28 kPa.
+std::string geostatic_input(double yield_stress) {
+  return "kinematics: plane_strain\nmesh:\n  blocks:\n    cell: quad4\n"
+         "    x: {breaks: [0.0, 1.0], cells: [2]}\n    y: {breaks: [0.0, 2.0], cells: [4]}\n"
+         "    regions: [soil]\n"
+         "materials:\n  soil: {type: von_mises, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
+         "yield_stress: " +
+         exact(yield_stress) +
+         "}\n"
+         "initial_stress:\n  - {region: soil, type: geostatic, unit_weight: 20.0, "
+         "lateral_coefficient: 0.3, surface: 2.0}\n"
+         "stages:\n  - name: rest\n    boundary_conditions:\n"
+         "      - {set: bottom, component: y, value: 0}\n"
+         "      - {set: left, component: x, value: 0}\n"
+         "      - {set: right, component: x, value: 0}\n";
+}
+
+TEST(InitialStress, OutsideTheYieldSurfaceIsAnInputError) {
+  EXPECT_NO_THROW(build_model(read_problem_text(geostatic_input(28.5), "column.yaml")));
+  try {
+    build_model(read_problem_text(geostatic_input(20.0), "column.yaml"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    std::printf("%s\n", what.c_str());
+    EXPECT_NE(what.find("column.yaml:"), std::string::npos);
+    EXPECT_NE(what.find("initial_stress[0]"), std::string::npos);
+    EXPECT_NE(what.find("region 'soil'"), std::string::npos);
+    EXPECT_NE(what.find("(0, 0)"), std::string::npos); // the first node of the base
+    EXPECT_NE(what.find("yield function is 8 kPa"), std::string::npos); // 28 − 20
+  }
+}
+
+} // namespace
+} // namespace bipot
