@@ -1,6 +1,9 @@
 #include "materials/material_registry.hpp"
 
+#include "materials/drucker_prager.hpp"
 #include "materials/linear_elastic.hpp"
+#include "materials/mohr_coulomb.hpp"
+#include "materials/tresca.hpp"
 #include "materials/von_mises.hpp"
 
 namespace bipot {
@@ -14,6 +17,9 @@ template <class T> void add(Registry<Material>& r) {
 void register_materials(Registry<Material>& registry) {
   add<LinearElastic>(registry);
   add<VonMises>(registry);
+  add<Tresca>(registry);
+  add<MohrCoulomb>(registry);
+  add<DruckerPrager>(registry);
 }
 
 const Registry<Material>& materials() {

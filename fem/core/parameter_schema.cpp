@@ -40,6 +40,11 @@ ParamSpec& ParamSpec::with_default(ParamValue v) {
   default_value = std::move(v);
   return *this;
 }
+ParamSpec& ParamSpec::optional() {
+  required = false;
+  default_value.reset();
+  return *this;
+}
 ParamSpec& ParamSpec::positive() {
   return greater_than(0.0);
 }
@@ -193,6 +198,8 @@ std::string ParamSchema::describe() const {
   if (specs_.empty()) os << "  (no parameters)\n";
   for (const auto& s : specs_)
     os << "  " << s.name << " (" << s.summary() << ")\n";
+  for (const auto& r : rules_)
+    os << "  rule: " << r.doc << "\n";
   return os.str();
 }
 
@@ -209,6 +216,8 @@ std::string ParamSchema::markdown_table() const {
                       : (s.default_value ? format_value(*s.default_value) : std::string("-")))
        << " | " << range << " | " << s.units << " | " << s.doc << " |\n";
   }
+  for (const auto& r : rules_)
+    os << "\nRule: " << r.doc << "\n";
   return os.str();
 }
 
@@ -287,6 +296,9 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
       out.set(spec.name, *spec.default_value);
   }
   given = out;
+  if (problems.empty())
+    for (const auto& rule : schema.rules())
+      if (auto msg = rule.check(given)) problems.push_back({rule.key, *msg});
   return problems;
 }
 

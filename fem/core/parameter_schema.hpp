@@ -3,6 +3,7 @@
 /// law and solver declares its keys with type, default, range, units and a one-line doc.
 /// The same schema validates input, formats error messages and generates the docs.
 
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -36,6 +37,9 @@ struct ParamSpec {
   std::string range_reason;         ///< why the range is what it is, for the message ("" = none)
 
   ParamSpec& with_default(ParamValue v);
+  /// Not required and without default: an absent key turns a feature off
+  /// (ParameterSet::has tells).
+  ParamSpec& optional();
   ParamSpec& positive();             ///< (0, inf)
   ParamSpec& non_negative();         ///< [0, inf)
   ParamSpec& at_least(double v);     ///< [v, ...
@@ -55,6 +59,16 @@ struct ParamSpec {
   std::string summary() const;
 };
 
+class ParameterSet;
+
+/// A condition between keys (e.g. dilatancy angle ≤ friction angle), checked once every key
+/// is valid on its own. `check` returns the problem or nullopt; it is reported at `key`.
+struct ParamRule {
+  std::string key;
+  std::string doc; ///< the condition in words, for --describe and the docs
+  std::function<std::optional<std::string>(const ParameterSet&)> check;
+};
+
 /// The ordered list of keys a named object accepts.
 class ParamSchema {
 public:
@@ -71,6 +85,9 @@ public:
   ParamSpec& integer(const std::string& key, const std::string& doc);
   ParamSpec& boolean(const std::string& key, const std::string& doc);
   ParamSpec& string(const std::string& key, const std::string& doc);
+  /// Adds a cross-key rule (see ParamRule).
+  void rule(ParamRule rule) { rules_.push_back(std::move(rule)); }
+  const std::vector<ParamRule>& rules() const { return rules_; }
 
   /// Human-readable description: name, doc, then one line per key.
   std::string describe() const;
@@ -82,6 +99,7 @@ private:
   std::string name_;
   std::string doc_;
   std::vector<ParamSpec> specs_;
+  std::vector<ParamRule> rules_;
 };
 
 /// Validated parameter values by key. Typed getters throw bipot::Error on a missing key or
@@ -108,7 +126,8 @@ struct ParamProblem {
 };
 
 /// Checks `given` against `schema` (unknown keys with the nearest valid one, missing required
-/// keys with their doc, wrong types, out-of-range values) and fills in defaults.
+/// keys with their doc, wrong types, out-of-range values, then, if all of that passed, the
+/// schema's cross-key rules) and fills in defaults.
 /// An integer given where a real is expected is accepted and converted.
 std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& given);
 

@@ -59,6 +59,34 @@ TEST(ParamSchema, ValidateReportsEveryProblem) {
   EXPECT_EQ(by_key["stiffness"].substr(0, 22), "missing required key (");
 }
 
+// Cross-key rules run only once every key is valid on its own (so they may read any key),
+// and report at their key; an optional key without default stays absent.
+TEST(ParamSchema, RulesAndOptionalKeys) {
+  ParamSchema s("pair", "two bounds");
+  s.real("low", "", "lower bound");
+  s.real("high", "", "upper bound");
+  s.real("extra", "", "absent means none").optional();
+  s.rule({"high", "low <= high", [](const ParameterSet& p) -> std::optional<std::string> {
+            if (p.real("low") <= p.real("high")) return std::nullopt;
+            return "value below low";
+          }});
+  ParameterSet p;
+  p.set("low", 2.0);
+  p.set("high", 1.0);
+  auto problems = validate(s, p);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "high");
+  EXPECT_EQ(problems[0].message, "value below low");
+  EXPECT_FALSE(p.has("extra"));
+  ParameterSet q;
+  q.set("low", 2.0); // "high" missing: the rule must not run (it would throw)
+  problems = validate(s, q);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].key, "high");
+  EXPECT_NE(s.markdown_table().find("\nRule: low <= high\n"), std::string::npos);
+  EXPECT_EQ(s.find("extra")->summary(), "real, optional: absent means none");
+}
+
 TEST(ParamSchema, OpenAndClosedBounds) {
   ParamSpec spec;
   spec.greater_than(0).at_most(1);

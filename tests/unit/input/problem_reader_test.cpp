@@ -41,9 +41,19 @@ TEST(ProblemReader, UnknownKeySuggestsNearest) {
 }
 
 TEST(ProblemReader, UnknownMaterialListsRegistered) {
-  const auto p = problems_of(replace(good, "type: linear_elastic", "type: mohr_coulomb"));
-  EXPECT_TRUE(has(p, "in.yaml:9:16: materials.soil.type: unknown material 'mohr_coulomb'; "
-                     "registered: linear_elastic"));
+  const auto p = problems_of(replace(good, "type: linear_elastic", "type: cam_clay"));
+  EXPECT_TRUE(has(p, "in.yaml:9:16: materials.soil.type: unknown material 'cam_clay'; "
+                     "registered: drucker_prager, linear_elastic, mohr_coulomb, tresca, "
+                     "von_mises"));
+}
+
+// A cross-key rule of a material's schema is reported at the key it concerns.
+TEST(ProblemReader, MaterialRuleIsReportedAtItsKey) {
+  const auto p = problems_of(replace(good, "type: linear_elastic",
+                                     "type: mohr_coulomb, cohesion: 5, friction_angle: 30, "
+                                     "dilatancy_angle: 35"));
+  EXPECT_TRUE(has(p, "in.yaml:9:63: materials.soil.dilatancy_angle: value 35 deg exceeds "
+                     "friction_angle 30 deg"));
 }
 
 TEST(ProblemReader, WrongTypeAndOutOfRange) {

@@ -3,8 +3,11 @@
 // (to check consistent tangents) and a mixed strain/stress control loop (Newton on the
 // stress-controlled strain components with the material's own tangent).
 
-#include "materials/material.hpp"
+#include "materials/elasto_plastic.hpp"
 
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include <vector>
@@ -35,9 +38,85 @@ inline VoigtMatrix fd_tangent(const Material& m, const Voigt& strain, const Voig
   return D;
 }
 
-/// Max-norm relative difference ‖A − B‖∞ / ‖B‖∞.
+/// Solves [[a, b], [c, d]] x = (r1, r2) by Cramer's rule: an independent check of the
+/// implementations' LU solves in hand-computed returns.
+inline std::pair<double, double> cramer(double a, double b, double c, double d, double r1,
+                                        double r2) {
+  const double det = a * d - b * c;
+  return {(d * r1 - b * r2) / det, (a * r2 - c * r1) / det};
+}
+
+/// Max-norm relative difference ‖A − B‖∞ / ‖scale‖∞ (scale = B by default; the elastic
+/// matrix where B may vanish, as at an apex).
 inline double relative_difference(const VoigtMatrix& A, const VoigtMatrix& B) {
   return (A - B).cwiseAbs().maxCoeff() / B.cwiseAbs().maxCoeff();
+}
+inline double relative_difference(const VoigtMatrix& A, const VoigtMatrix& B,
+                                  const VoigtMatrix& scale) {
+  return (A - B).cwiseAbs().maxCoeff() / scale.cwiseAbs().maxCoeff();
+}
+
+/// Columns: unit principal directions for ordered principal values. In 3D a general
+/// rotation; in 2D (n = 4) σ1 and σ3 in the xy plane and σ2 along z, which must be principal.
+inline Mat3 principal_frame(int n) {
+  const double a = 0.4, b = 1.1, c = -0.7;
+  const Mat3 Rz = Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+  if (n == 4) {
+    Mat3 Q;
+    Q << Rz.col(0), Vec3::UnitZ(), Rz.col(1);
+    return Q;
+  }
+  return Rz * Eigen::AngleAxisd(b, Vec3::UnitY()).toRotationMatrix() *
+         Eigen::AngleAxisd(c, Vec3::UnitZ()).toRotationMatrix();
+}
+
+/// Puts the ordered principal trial stress in a rotated frame (3D and 2D), runs update()
+/// with it as the initial stress at zero strain from a virgin state, and expects the total
+/// stress Q diag(expected) Qᵀ within `tol` × the largest trial component, the branch code,
+/// and a returned stress on the yield surface.
+inline void expect_return(const ElastoPlastic& m, const Vec3& trial, const Vec3& expected,
+                          int branch, double tol = 1e-10) {
+  const double scale = trial.cwiseAbs().maxCoeff();
+  for (int n : {4, 6}) {
+    const Mat3 Q = principal_frame(n);
+    const Mat3 T = Q * trial.asDiagonal() * Q.transpose();
+    const Voigt sigma0 = stress_voigt(T, n);
+    const Voigt want = stress_voigt(Mat3(Q * expected.asDiagonal() * Q.transpose()), n);
+    EXPECT_EQ(m.return_stress(T, 0.0).branch, branch) << "n=" << n;
+    Voigt s;
+    VoigtMatrix D;
+    double state[ElastoPlastic::state_size];
+    m.update(Voigt::Zero(n), sigma0, nullptr, s, D, state);
+    EXPECT_LT((s + sigma0 - want).cwiseAbs().maxCoeff(), tol * scale)
+        << "n=" << n << "\n got " << (s + sigma0).transpose() << "\nwant " << want.transpose();
+    EXPECT_NEAR(m.yield_function(stress_tensor(s + sigma0), state[ElastoPlastic::hardening_slot]),
+                0.0, tol * scale);
+  }
+}
+
+/// The tangent against central differences, at strain `strain` on top of the initial stress
+/// whose principal values are `trial` (rotated as in expect_return), in 2D and 3D. The
+/// error is measured against the elastic matrix (the tangent vanishes at an apex).
+inline void expect_fd_tangent(const ElastoPlastic& m, const Vec3& trial, int branch,
+                              double tol = 1e-6) {
+  for (int n : {4, 6}) {
+    const Mat3 Q = principal_frame(n);
+    const Voigt sigma0 = stress_voigt(Mat3(Q * trial.asDiagonal() * Q.transpose()), n);
+    // A small strain with every component, so the principal directions rotate.
+    Voigt strain(n);
+    for (int i = 0; i < n; ++i)
+      strain(i) = 1e-5 * (1 + 0.37 * i) * (i % 2 ? -1 : 1);
+    Voigt s;
+    VoigtMatrix D;
+    m.update(strain, sigma0, nullptr, s, D, nullptr);
+    EXPECT_EQ(m.return_stress(stress_tensor(sigma0 + m.elasticity_matrix(n) * strain), 0.0).branch,
+              branch)
+        << "n=" << n;
+    const VoigtMatrix fd = fd_tangent(m, strain, sigma0, nullptr, 1e-9);
+    EXPECT_LT(relative_difference(D, fd, m.elasticity_matrix(n)), tol) << "n=" << n << "\n"
+                                                                       << D << "\n\n"
+                                                                       << fd;
+  }
 }
 
 /// Finds the strain whose components with `controlled[i] == false` equal `strain(i)` and

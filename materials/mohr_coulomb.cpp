@@ -1,0 +1,94 @@
+#include "materials/mohr_coulomb.hpp"
+
+#include "materials/linear_elastic.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace bipot {
+
+namespace {
+constexpr double degree = M_PI / 180.0;
+
+// The plane through principal components (a, b), a ≥ b: (1 + sin α) σa − (1 − sin α) σb.
+Vec3 shear_plane(int a, int b, double sin_angle) {
+  Vec3 v = Vec3::Zero();
+  v(a) = 1 + sin_angle;
+  v(b) = -(1 - sin_angle);
+  return v;
+}
+} // namespace
+
+void add_friction_keys(ParamSchema& s, const std::string& model) {
+  s.real("cohesion", "kPa", "cohesion c").non_negative();
+  s.real("friction_angle", "deg", "friction angle phi")
+      .at_least(0.0)
+      .less_than(90.0)
+      .because("a friction angle of 90 degrees or more has no finite strength in compression");
+  s.real("dilatancy_angle", "deg", "dilatancy angle psi (plastic potential); psi <= phi")
+      .at_least(0.0)
+      .less_than(90.0);
+  s.rule({"dilatancy_angle", "dilatancy_angle <= friction_angle",
+          [](const ParameterSet& p) -> std::optional<std::string> {
+            if (p.real("dilatancy_angle") <= p.real("friction_angle")) return std::nullopt;
+            return "value " + format_value(p.real("dilatancy_angle")) +
+                   " deg exceeds friction_angle " + format_value(p.real("friction_angle")) +
+                   " deg: a dilatancy angle above the friction angle would dissipate "
+                   "negative work";
+          }});
+  s.rule({"cohesion", "cohesion > 0 when friction_angle is 0",
+          [model](const ParameterSet& p) -> std::optional<std::string> {
+            if (p.real("cohesion") > 0 || p.real("friction_angle") > 0) return std::nullopt;
+            return "value 0 with friction_angle 0 leaves the " + model +
+                   " material no strength at all; give cohesion > 0 or friction_angle > 0";
+          }});
+}
+
+ParamSchema MohrCoulomb::schema() {
+  ParamSchema s("mohr_coulomb",
+                "Mohr-Coulomb plasticity (non-associated, perfectly plastic) with an optional "
+                "tension cut-off");
+  add_hooke_keys(s);
+  add_friction_keys(s, "mohr_coulomb");
+  s.real("tension_cutoff", "kPa",
+         "tensile strength sigma_t: the major principal stress stays <= sigma_t (absent: no "
+         "cut-off)")
+      .non_negative()
+      .optional();
+  add_unit_weight_key(s);
+  return s;
+}
+
+MohrCoulomb::MohrCoulomb(const ParameterSet& p)
+    : MohrCoulomb(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("cohesion"),
+                  p.real("friction_angle"), p.real("dilatancy_angle"),
+                  p.has("tension_cutoff") ? std::optional<double>(p.real("tension_cutoff"))
+                                          : std::nullopt,
+                  p.real("unit_weight")) {}
+
+MohrCoulomb::MohrCoulomb(double youngs_modulus, double poissons_ratio, double cohesion,
+                         double friction_angle, double dilatancy_angle,
+                         std::optional<double> tension_cutoff, double unit_weight)
+    : MultiSurfacePlastic(youngs_modulus, poissons_ratio, unit_weight) {
+  const double sphi = std::sin(friction_angle * degree), spsi = std::sin(dilatancy_angle * degree);
+  const double k = 2 * cohesion * std::cos(friction_angle * degree);
+  // Surfaces 0-2: main plane (σ1, σ3), then (σ2, σ3) and (σ1, σ2); 3-5: cut-off on σ1..σ3.
+  std::vector<PrincipalSurface> surfaces;
+  for (auto [a, b] : {std::pair{0, 2}, std::pair{1, 2}, std::pair{0, 1}})
+    surfaces.push_back({shear_plane(a, b, sphi), shear_plane(a, b, spsi), k, 0.0, 1.0});
+  std::vector<std::vector<int>> sets = {{0}, {}, {0, 1}, {0, 2}, {}, {}, {0, 1, 2}};
+  if (tension_cutoff) {
+    for (int a = 0; a < 3; ++a)
+      surfaces.push_back({Vec3::Unit(a), Vec3::Unit(a), *tension_cutoff, 0.0, 0.0});
+    sets = {{0}, {3}, {0, 1}, {0, 2}, {0, 3}, {3, 4}, {0, 1, 2}, {0, 3, 4}, {0, 2, 3}, {3, 4, 5}};
+  }
+  // Without a cut-off the empty placeholders keep the branch codes (index + 1) fixed; an
+  // empty set is never admissible because the trial is outside the surface.
+  const double apex = sphi > 0 ? cohesion * std::cos(friction_angle * degree) / sphi
+                               : std::numeric_limits<double>::infinity();
+  const double apex_stress = tension_cutoff ? std::min(apex, *tension_cutoff) : apex;
+  set_surfaces(std::move(surfaces), std::move(sets), apex_stress,
+               tension_cutoff && *tension_cutoff < apex ? TensionApex : Apex);
+}
+
+} // namespace bipot

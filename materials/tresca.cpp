@@ -1,0 +1,40 @@
+#include "materials/tresca.hpp"
+
+#include "materials/linear_elastic.hpp"
+
+#include <limits>
+
+namespace bipot {
+
+ParamSchema Tresca::schema() {
+  ParamSchema s("tresca", "Tresca plasticity with linear isotropic hardening of the shear "
+                          "strength");
+  add_hooke_keys(s);
+  s.real("cohesion", "kPa", "shear strength c (undrained: s_u): sigma_1 - sigma_3 <= 2 c")
+      .positive();
+  s.real("hardening_modulus", "kPa",
+         "linear hardening H of the shear strength c + H * gamma_p (plastic shear strain)")
+      .non_negative()
+      .with_default(0.0);
+  add_unit_weight_key(s);
+  return s;
+}
+
+Tresca::Tresca(const ParameterSet& p)
+    : Tresca(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("cohesion"),
+             p.real("hardening_modulus"), p.real("unit_weight")) {}
+
+Tresca::Tresca(double youngs_modulus, double poissons_ratio, double cohesion,
+               double hardening_modulus, double unit_weight)
+    : MultiSurfacePlastic(youngs_modulus, poissons_ratio, unit_weight) {
+  std::vector<PrincipalSurface> surfaces;
+  for (auto [a, b] : {std::pair{0, 2}, std::pair{1, 2}, std::pair{0, 1}}) {
+    const Vec3 n = Vec3::Unit(a) - Vec3::Unit(b);
+    surfaces.push_back({n, n, 2 * cohesion, 2 * hardening_modulus, 2.0});
+  }
+  // No apex: the prism is open along the hydrostatic axis.
+  set_surfaces(std::move(surfaces), {{0}, {0, 1}, {0, 2}}, std::numeric_limits<double>::infinity(),
+               -1);
+}
+
+} // namespace bipot

@@ -1,0 +1,178 @@
+#include "materials/linear_elastic.hpp"
+#include "materials/material_registry.hpp"
+#include "materials/mohr_coulomb.hpp"
+#include "point_driver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bipot {
+namespace {
+
+using test::cramer;
+using test::expect_fd_tangent;
+using test::expect_return;
+
+// E = 2.5e4 kPa, ν = 0.25: λ = G = 1e4 kPa, so the principal elasticity is
+// C = 1e4 (1⊗1 + 2 I). c = 10 kPa, φ = 30° (sin φ = 1/2, 2c cos φ = 10√3), sin ψ = 0.2.
+// Plane normals n and flow vectors m (tension positive, σ1 ≥ σ2 ≥ σ3):
+//   main (σ1,σ3): n1 = (1.5, 0, −0.5), m1 = (1.2, 0, −0.8), C m1 = 1e4 (2.8, 0.4, −1.2)
+//   (σ2,σ3):      n2 = (0, 1.5, −0.5), m2 = (0, 1.2, −0.8), C m2 = 1e4 (0.4, 2.8, −1.2)
+//   (σ1,σ2):      n3 = (1.5, −0.5, 0), m3 = (1.2, −0.8, 0), C m3 = 1e4 (2.8, −1.2, 0.4)
+//   cut-off σ1:   t = m = (1, 0, 0),                       C t  = 1e4 (3, 1, 1)
+constexpr double E = 2.5e4, nu = 0.25, c = 10.0, phi = 30.0;
+const double psi = std::asin(0.2) * 180.0 / M_PI;
+const double k = 10.0 * std::sqrt(3.0); // 2 c cos φ
+const Vec3 Cm1 = 1e4 * Vec3(2.8, 0.4, -1.2), Cm2 = 1e4 * Vec3(0.4, 2.8, -1.2),
+           Cm3 = 1e4 * Vec3(2.8, -1.2, 0.4), Ct = 1e4 * Vec3(3, 1, 1);
+double f1(const Vec3& s) {
+  return 1.5 * s(0) - 0.5 * s(2) - k;
+}
+double f2(const Vec3& s) {
+  return 1.5 * s(1) - 0.5 * s(2) - k;
+}
+double f3(const Vec3& s) {
+  return 1.5 * s(0) - 0.5 * s(1) - k;
+}
+
+// Trial (−20, −50, −150): f1 = −30 + 75 − 10√3 > 0, n1·C m1 = 1e4 (4.2 + 0.6) = 4.8e4, so
+// Δλ = f1/4.8e4 and σ = σ* − Δλ C m1 ≈ (−36.15, −52.31, −143.08), still ordered.
+TEST(MohrCoulomb, PlaneReturn) {
+  MohrCoulomb m(E, nu, c, phi, psi);
+  const Vec3 t(-20, -50, -150);
+  const double dl = f1(t) / 4.8e4;
+  expect_return(m, t, t - dl * Cm1, MohrCoulomb::Plane);
+}
+
+// Trial (−20, −25, −150): the plane return would give σ1 < σ2. Left edge (σ1 = σ2): planes 1
+// and 2, M = 1e4 [[4.8, 1.2], [1.2, 4.8]] (n1·C m2 = 1.5·0.4 + 0.5·1.2 = 1.2), rhs (f1, f2).
+TEST(MohrCoulomb, LeftEdgeReturn) {
+  MohrCoulomb m(E, nu, c, phi, psi);
+  const Vec3 t(-20, -25, -150);
+  const auto [a, b] = cramer(4.8e4, 1.2e4, 1.2e4, 4.8e4, f1(t), f2(t));
+  const Vec3 s = t - a * Cm1 - b * Cm2;
+  EXPECT_NEAR(s(0), s(1), 1e-12 * 150);
+  expect_return(m, t, s, MohrCoulomb::EdgeLeft);
+}
+
+// Trial (−20, −148, −150): the plane return would give σ2 < σ3. Right edge (σ2 = σ3): planes
+// 1 and 3, M = 1e4 [[4.8, 4.0], [4.0, 4.8]] (n1·C m3 = 4.2 − 0.2, n3·C m1 = 4.2 − 0.2).
+TEST(MohrCoulomb, RightEdgeReturn) {
+  MohrCoulomb m(E, nu, c, phi, psi);
+  const Vec3 t(-20, -148, -150);
+  const auto [a, b] = cramer(4.8e4, 4.0e4, 4.0e4, 4.8e4, f1(t), f3(t));
+  const Vec3 s = t - a * Cm1 - b * Cm3;
+  EXPECT_NEAR(s(1), s(2), 1e-12 * 150);
+  expect_return(m, t, s, MohrCoulomb::EdgeRight);
+}
+
+// Trial (40, 35, 30) lies beyond the apex c cot φ = 10√3: σ = 10√3 (1, 1, 1), with and
+// without dilatancy (ψ = 0: no flow changes the mean stress, the apex is the return).
+TEST(MohrCoulomb, ApexReturn) {
+  const Vec3 t(40, 35, 30), apex = Vec3::Constant(10 * std::sqrt(3.0));
+  expect_return(MohrCoulomb(E, nu, c, phi, psi), t, apex, MohrCoulomb::Apex);
+  expect_return(MohrCoulomb(E, nu, c, phi, 0.0), t, apex, MohrCoulomb::Apex);
+}
+
+// Cut-off σt = 5. Trial (8, 2, 1): inside Mohr–Coulomb (12 − 0.5 − 10√3 < 0), σ1 > σt:
+// Δλ = 3/3e4, σ = (8, 2, 1) − 1e-4 · 1e4 (3, 1, 1) = (5, 1, 0).
+// Trial (8, 7, 1): the plane would give σ2 > σ1; cut-off edge, M = 1e4 [[3, 1], [1, 3]],
+// rhs (3, 2): Δλ = (7/8, 3/8) 1e-4, σ = (5, 5, −0.25).
+TEST(MohrCoulomb, TensionCutoffPlaneAndEdge) {
+  MohrCoulomb m(E, nu, c, phi, psi, 5.0);
+  expect_return(m, Vec3(8, 2, 1), Vec3(5, 1, 0), MohrCoulomb::Tension);
+  expect_return(m, Vec3(8, 7, 1), Vec3(5, 5, -0.25), MohrCoulomb::TensionEdge);
+}
+
+// Cut-off σt = 2, trial (20, −20, −30): the plane return leaves σ1 ≈ 3.85 > σt and the
+// cut-off alone leaves f1 > 0: corner of the main plane and the cut-off,
+// M = 1e4 [[n1·C m1, n1·C t], [t·C m1, t·C t]] = 1e4 [[4.8, 4.0], [2.8, 3]], rhs (f1, 18).
+TEST(MohrCoulomb, TensionCutoffCorner) {
+  MohrCoulomb m(E, nu, c, phi, psi, 2.0);
+  const Vec3 t(20, -20, -30);
+  const auto [a, b] = cramer(4.8e4, 4.0e4, 2.8e4, 3.0e4, f1(t), t(0) - 2.0);
+  const Vec3 s = t - a * Cm1 - b * Ct;
+  EXPECT_NEAR(s(0), 2.0, 1e-12 * 30);
+  expect_return(m, t, s, MohrCoulomb::PlaneTension);
+}
+
+TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
+  MohrCoulomb m(E, nu, c, phi, psi), cut(E, nu, c, phi, psi, 5.0), corner(E, nu, c, phi, psi, 2.0);
+  expect_fd_tangent(m, Vec3(-20, -50, -150), MohrCoulomb::Plane);
+  expect_fd_tangent(m, Vec3(-20, -25, -150), MohrCoulomb::EdgeLeft);
+  expect_fd_tangent(m, Vec3(-20, -148, -150), MohrCoulomb::EdgeRight);
+  expect_fd_tangent(m, Vec3(40, 35, 30), MohrCoulomb::Apex);
+  expect_fd_tangent(cut, Vec3(8, 2, 1), MohrCoulomb::Tension);
+  expect_fd_tangent(cut, Vec3(8, 7, 1), MohrCoulomb::TensionEdge);
+  expect_fd_tangent(corner, Vec3(20, -20, -30), MohrCoulomb::PlaneTension);
+  expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
+}
+
+// With a huge cohesion nothing yields: stress and tangent equal linear_elastic's.
+TEST(MohrCoulomb, HugeCohesionEqualsLinearElastic) {
+  MohrCoulomb m(E, nu, 1e12, phi, psi);
+  LinearElastic el(E, nu);
+  for (int n : {4, 6}) {
+    Voigt strain(n), sigma0 = Voigt::Zero(n);
+    for (int i = 0; i < n; ++i)
+      strain(i) = 1e-3 * std::sin(1.0 + i);
+    sigma0.head(3) << -30, -40, -50;
+    Voigt s1, s2;
+    VoigtMatrix D1, D2;
+    m.update(strain, sigma0, nullptr, s1, D1, nullptr);
+    el.update(strain, sigma0, nullptr, s2, D2, nullptr);
+    EXPECT_LE((s1 - s2).cwiseAbs().maxCoeff(), 1e-12 * s2.cwiseAbs().maxCoeff());
+    EXPECT_LE((D1 - D2).cwiseAbs().maxCoeff(), 1e-12 * D2.cwiseAbs().maxCoeff());
+  }
+}
+
+std::string create_error(const std::string& name, ParameterSet p) {
+  try {
+    materials().create(name, std::move(p));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(MohrCoulomb, BadInputNamesTheKey) {
+  ParameterSet p;
+  p.set("youngs_modulus", E);
+  p.set("poissons_ratio", nu);
+  p.set("cohesion", c);
+  p.set("friction_angle", phi);
+  p.set("dilatancy_angle", 35.0);
+  EXPECT_NE(create_error("mohr_coulomb", p)
+                .find("mohr_coulomb.dilatancy_angle: value 35 deg exceeds friction_angle 30 deg"),
+            std::string::npos)
+      << create_error("mohr_coulomb", p);
+  p.set("dilatancy_angle", 0.0);
+  p.set("friction_angle", 90.0);
+  EXPECT_NE(create_error("mohr_coulomb", p)
+                .find("mohr_coulomb.friction_angle: value 90 is out of range [0, 90) deg"),
+            std::string::npos)
+      << create_error("mohr_coulomb", p);
+  p.set("friction_angle", -1.0);
+  EXPECT_NE(create_error("mohr_coulomb", p)
+                .find("mohr_coulomb.friction_angle: value -1 is out of range [0, 90) deg"),
+            std::string::npos);
+  p.set("friction_angle", 0.0);
+  p.set("cohesion", -1.0);
+  EXPECT_NE(create_error("mohr_coulomb", p)
+                .find("mohr_coulomb.cohesion: value -1 is out of range [0, inf) kPa"),
+            std::string::npos)
+      << create_error("mohr_coulomb", p);
+  p.set("cohesion", 0.0);
+  EXPECT_NE(create_error("mohr_coulomb", p)
+                .find("mohr_coulomb.cohesion: value 0 with friction_angle 0 leaves the "
+                      "mohr_coulomb material no strength"),
+            std::string::npos)
+      << create_error("mohr_coulomb", p);
+  p.set("cohesion", c);
+  p.set("tension_cutoff", 3.0);
+  EXPECT_EQ(create_error("mohr_coulomb", p), "no error");
+}
+
+} // namespace
+} // namespace bipot
