@@ -19,6 +19,7 @@
 #include <iterator>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -43,13 +44,13 @@ std::string von_mises(double hardening) {
 // One axisymmetric quad4 cell, r in [0, R], z in [0, 1]: confined by p on its side and top,
 // then compressed axially by a prescribed top displacement with the side pressure held, then
 // unloaded axially to `unload` (elastic: the committed plastic strain must be remembered).
-std::string triaxial_input(double p, double top, int increments, double unload,
-                           bool reset = false) {
+std::string triaxial_input(double p, double top, int increments, double unload, bool reset = false,
+                           const std::string& material = von_mises(H)) {
   return "kinematics: axisymmetric\nmesh:\n  blocks:\n    cell: quad4\n"
          "    x: {breaks: [0.0, 0.5], cells: [1]}\n    y: {breaks: [0.0, 1.0], cells: [1]}\n"
          "    regions: [sample]\n"
          "materials:\n  sample: " +
-         von_mises(H) +
+         material +
          "\n"
          "linear_solver: {method: direct}\n"
          "stages:\n"
@@ -175,6 +176,43 @@ TEST(PlasticState, DisplacementResetKeepsThePlasticHistory) {
     EXPECT_NEAR(reset.fields[i], plain.fields[i], 1e-12) << i;
   for (std::size_t i = 0; i < plain.u.size(); ++i)
     EXPECT_NEAR(reset.u[i], plain.u[i] - plain.u_shear[i], 1e-12) << i;
+}
+
+// Drained triaxial compression of Mohr–Coulomb soil (c = 10 kPa, φ = 30°, ψ = 10°) under
+// the confining pressure p: the axial stress at failure is −(N p + 2 c √N), N = (1 + sin φ) /
+// (1 − sin φ), and once failing the strain increments are plastic with the triaxial edge's
+// flow: Δε_v / Δε_a = −2 sin ψ / (1 − sin ψ) (dilation under axial compression).
+TEST(PlasticTriaxial, MohrCoulombStrengthAndDilatancy) {
+  const double p = 50.0, R = 0.5, c = 10.0, phi = 30.0 * M_PI / 180, psi = 10.0 * M_PI / 180;
+  const double N = (1 + std::sin(phi)) / (1 - std::sin(phi));
+  const std::string mc = "{type: mohr_coulomb, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
+                         "cohesion: 10.0, friction_angle: 30.0, dilatancy_angle: 10.0}";
+  const Model model = build_model(
+      read_problem_text(triaxial_input(p, -0.05, 5, -0.05, false, mc), "mc_triaxial.yaml"));
+  StaticAnalysis analysis(model);
+  Index side = -1, top = -1;
+  for (Index n = 0; n < model.mesh.num_nodes(); ++n) {
+    if (std::abs(model.mesh.nodes[n][0] - R) < 1e-12) side = n;
+    if (std::abs(model.mesh.nodes[n][1] - 1.0) < 1e-12) top = n;
+  }
+  std::vector<std::array<double, 2>> strains; // (ε_a, ε_v) at the end of each shear step
+  analysis.run([&](const StepReport& r) {
+    if (r.stage != "shear") return;
+    const auto& u = analysis.displacement();
+    const double ea = u[top * 2 + 1], er = u[side * 2] / R;
+    strains.push_back({ea, ea + 2 * er});
+    const double sa = analysis.reaction("top")[1] / (M_PI * R * R);
+    std::printf("MC triaxial step %d: eps_a %.5f, sigma_a %.10g (failure %.10g)\n", r.step, ea, sa,
+                -(N * p + 2 * c * std::sqrt(N)));
+  });
+  ASSERT_EQ(strains.size(), 5u);
+  const double sa = analysis.reaction("top")[1] / (M_PI * R * R);
+  EXPECT_NEAR(sa, -(N * p + 2 * c * std::sqrt(N)), 1e-8 * (N * p));
+  // The last two steps are on the failure plateau (failure at ε_a ≈ −0.012).
+  const double dea = strains[4][0] - strains[3][0], dev = strains[4][1] - strains[3][1];
+  const double ratio = -2 * std::sin(psi) / (1 - std::sin(psi));
+  std::printf("MC dilatancy: dev/dea %.10g, closed form %.10g\n", dev / dea, ratio);
+  EXPECT_NEAR(dev / dea, ratio, 1e-8 * std::abs(ratio));
 }
 
 // The VTK series carries the materials' output fields as cell data.
