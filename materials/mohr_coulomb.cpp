@@ -73,17 +73,30 @@ MohrCoulomb::MohrCoulomb(double youngs_modulus, double poissons_ratio, double co
   const double sphi = std::sin(friction_angle * degree), spsi = std::sin(dilatancy_angle * degree);
   const double k = 2 * cohesion * std::cos(friction_angle * degree);
   // Surfaces 0-2: main plane (σ1, σ3), then (σ2, σ3) and (σ1, σ2); 3-5: cut-off on σ1..σ3.
+  // No hardening: κ stays 0.
   std::vector<PrincipalSurface> surfaces;
   for (auto [a, b] : {std::pair{0, 2}, std::pair{1, 2}, std::pair{0, 1}})
-    surfaces.push_back({shear_plane(a, b, sphi), shear_plane(a, b, spsi), k, 0.0, 1.0});
-  std::vector<std::vector<int>> sets = {{0}, {}, {0, 1}, {0, 2}, {}, {}, {0, 1, 2}};
+    surfaces.push_back({shear_plane(a, b, sphi), shear_plane(a, b, spsi), k, 0.0, 0.0});
+  std::vector<ActiveSet> sets = {
+      {{0}, Plane}, {{0, 1}, EdgeLeft}, {{0, 2}, EdgeRight}, {{0, 1, 2}, Apex}};
   if (tension_cutoff) {
     for (int a = 0; a < 3; ++a)
       surfaces.push_back({Vec3::Unit(a), Vec3::Unit(a), *tension_cutoff, 0.0, 0.0});
-    sets = {{0}, {3}, {0, 1}, {0, 2}, {0, 3}, {3, 4}, {0, 1, 2}, {0, 3, 4}, {0, 2, 3}, {3, 4, 5}};
+    // Smaller sets first; the cut-off edge on the yield surface (four planes through one
+    // point) is covered by three 3-plane subsets (ActiveSet).
+    sets = {{{0}, Plane},
+            {{3}, Tension},
+            {{0, 1}, EdgeLeft},
+            {{0, 2}, EdgeRight},
+            {{0, 3}, PlaneTension},
+            {{3, 4}, TensionEdge},
+            {{0, 1, 2}, Apex},
+            {{0, 3, 4}, PlaneTensionEdge},
+            {{0, 1, 3}, PlaneTensionEdge},
+            {{0, 1, 4}, PlaneTensionEdge},
+            {{0, 2, 3}, EdgeRightTension},
+            {{3, 4, 5}, TensionApex}};
   }
-  // Without a cut-off the empty placeholders keep the branch codes (index + 1) fixed; an
-  // empty set is never admissible because the trial is outside the surface.
   const double apex = sphi > 0 ? cohesion * std::cos(friction_angle * degree) / sphi
                                : std::numeric_limits<double>::infinity();
   const double apex_stress = tension_cutoff ? std::min(apex, *tension_cutoff) : apex;

@@ -11,6 +11,12 @@
 
 namespace bipot {
 
+namespace {
+using Columns = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3>;
+using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+} // namespace
+
 double max_yield(const Vec3& stress, double kappa, const std::vector<PrincipalSurface>& surfaces) {
   double f = -std::numeric_limits<double>::infinity();
   for (const auto& s : surfaces)
@@ -20,7 +26,7 @@ double max_yield(const Vec3& stress, double kappa, const std::vector<PrincipalSu
 
 PrincipalResult principal_return(const Vec3& trial, double kappa,
                                  const std::vector<PrincipalSurface>& surfaces,
-                                 const std::vector<std::vector<int>>& candidate_sets, double lambda,
+                                 const std::vector<ActiveSet>& candidate_sets, double lambda,
                                  double G) {
   const Mat3 C = lambda * Mat3::Ones() + 2 * G * Mat3::Identity();
   // Admissibility tolerances: round-off of the stresses involved.
@@ -30,11 +36,13 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
   const double tol = 1e-10 * scale;
   PrincipalResult out;
   for (std::size_t c = 0; c < candidate_sets.size(); ++c) {
-    const auto& set = candidate_sets[c];
+    const auto& set = candidate_sets[c].surfaces;
     const int k = static_cast<int>(set.size());
     if (k == 0) continue;
-    Eigen::MatrixXd N(3, k), CM(3, k), M(k, k);
-    Eigen::VectorXd f(k), w(k), h(k);
+    // Fixed capacity (at most 3 active planes): no heap allocation at quadrature points.
+    Columns N(3, k), CM(3, k);
+    Small M(k, k);
+    SmallVector f(k), w(k), h(k);
     for (int a = 0; a < k; ++a) {
       const PrincipalSurface& s = surfaces[set[a]];
       N.col(a) = s.normal;
@@ -44,10 +52,10 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
       h(a) = s.hardening;
     }
     M = N.transpose() * CM + h * w.transpose();
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+    Eigen::FullPivLU<Small> lu(M);
     lu.setThreshold(1e-12);
     if (lu.rank() < k) continue;
-    const Eigen::VectorXd dl = lu.solve(f);
+    const SmallVector dl = lu.solve(f);
     if (dl.minCoeff() < -1e-12 * std::max(1.0, dl.cwiseAbs().maxCoeff())) continue;
     const Vec3 sigma = trial - CM * dl;
     // Implied by the yield check for planes like these, but it is the condition under which
@@ -65,7 +73,7 @@ PrincipalResult principal_return(const Vec3& trial, double kappa,
 }
 
 void MultiSurfacePlastic::set_surfaces(std::vector<PrincipalSurface> surfaces,
-                                       std::vector<std::vector<int>> sets, double apex_stress,
+                                       std::vector<ActiveSet> sets, double apex_stress,
                                        int apex_branch) {
   surfaces_ = std::move(surfaces);
   sets_ = std::move(sets);
@@ -86,11 +94,12 @@ ElastoPlastic::Return MultiSurfacePlastic::return_stress(const Mat3& trial, doub
   Vec3 s;
   Mat3 J;
   if (pr.set >= 0) {
-    r.branch = pr.set + 1;
+    r.branch = sets_[pr.set].branch;
     s = pr.stress;
     J = pr.jacobian;
     r.hardening_increment = pr.hardening_increment;
-  } else if (std::isfinite(apex_stress_)) {
+  } else if (std::isfinite(apex_stress_) &&
+             p.values.mean() >= apex_stress_ - 1e-10 * p.values.cwiseAbs().maxCoeff()) {
     r.branch = apex_branch_;
     s.setConstant(apex_stress_);
     J.setZero();

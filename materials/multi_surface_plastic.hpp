@@ -29,6 +29,16 @@ struct PrincipalSurface {
   double hardening_weight; ///< w: Δκ = w Δλ
 };
 
+/// A candidate active set: indices into the surfaces (at most 3) and the branch code the
+/// material reports when it is taken. Several sets may share a code: where four planes meet
+/// at a point (e.g. σ1 = σ2 = σt on the Mohr–Coulomb surface) the flow is any non-negative
+/// combination of four vectors in 3D, which is the union of the cones of its 3-vector
+/// subsets (Carathéodory), so each subset is one candidate.
+struct ActiveSet {
+  std::vector<int> surfaces;
+  int branch;
+};
+
 struct PrincipalResult {
   int set = -1;  ///< index of the accepted candidate set, -1 = none admissible
   Vec3 stress;   ///< ordered principal stresses after the return
@@ -36,12 +46,12 @@ struct PrincipalResult {
   double hardening_increment = 0.0;
 };
 
-/// Tries the candidate active sets (indices into `surfaces`) in order; `lambda`, `G` are the
+/// Tries the candidate active sets in order; `lambda`, `G` are the
 /// Lamé constants. Sets whose matrix M is singular are skipped (e.g. the apex without
 /// dilatancy, where no plastic flow can change the mean stress).
 PrincipalResult principal_return(const Vec3& trial, double kappa,
                                  const std::vector<PrincipalSurface>& surfaces,
-                                 const std::vector<std::vector<int>>& candidate_sets, double lambda,
+                                 const std::vector<ActiveSet>& candidate_sets, double lambda,
                                  double G);
 
 /// max_i f_i(σ, κ) over the surfaces, for ordered principal stresses σ.
@@ -50,7 +60,7 @@ double max_yield(const Vec3& stress, double kappa, const std::vector<PrincipalSu
 /// An ElastoPlastic material whose yield surfaces are planes in principal stress space
 /// (mohr_coulomb, tresca): the derived class only lists the surfaces and the candidate sets;
 /// this class does the spectral decomposition, principal_return() and the tangent with the
-/// rotation of the principal directions. Branch code of a return = candidate index + 1.
+/// rotation of the principal directions.
 class MultiSurfacePlastic : public ElastoPlastic {
 public:
   Return return_stress(const Mat3& trial, double kappa) const override;
@@ -60,15 +70,16 @@ protected:
   using ElastoPlastic::ElastoPlastic;
   /// Sets the surfaces and candidate active sets. `apex_stress`, if finite, is the mean
   /// stress of a vertex every surface passes through, used when no candidate set is
-  /// admissible (a trial beyond the apex with no dilatancy: no flow can change the mean
-  /// stress, so the return is the vertex itself and the volumetric difference is plastic);
-  /// such a return reports branch code `apex_branch`, with a zero Jacobian.
-  void set_surfaces(std::vector<PrincipalSurface> surfaces, std::vector<std::vector<int>> sets,
+  /// admissible and the trial's mean stress is at or beyond it (no dilatancy: no flow can
+  /// change the mean stress, so the return is the vertex itself and the volumetric
+  /// difference is plastic); such a return reports branch code `apex_branch`, with a zero
+  /// Jacobian. Any other failure throws SolverError with the trial principal stresses.
+  void set_surfaces(std::vector<PrincipalSurface> surfaces, std::vector<ActiveSet> sets,
                     double apex_stress, int apex_branch);
 
 private:
   std::vector<PrincipalSurface> surfaces_;
-  std::vector<std::vector<int>> sets_;
+  std::vector<ActiveSet> sets_;
   double apex_stress_ = 0.0;
   int apex_branch_ = -1;
 };

@@ -33,8 +33,8 @@ Tresca::Tresca(double youngs_modulus, double poissons_ratio, double cohesion,
     surfaces.push_back({n, n, 2 * cohesion, 2 * hardening_modulus, 2.0});
   }
   // No apex: the prism is open along the hydrostatic axis.
-  set_surfaces(std::move(surfaces), {{0}, {0, 1}, {0, 2}}, std::numeric_limits<double>::infinity(),
-               -1);
+  set_surfaces(std::move(surfaces), {{{0}, Plane}, {{0, 1}, EdgeLeft}, {{0, 2}, EdgeRight}},
+               std::numeric_limits<double>::infinity(), -1);
 }
 
 } // namespace bipot

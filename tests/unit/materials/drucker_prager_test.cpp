@@ -72,6 +72,32 @@ TEST(DruckerPrager, ConeMatchesMohrCoulombMeridians) {
   EXPECT_NEAR(ext.yield_function(Vec3(s1, s3, s3).asDiagonal().toDenseMatrix(), 0), 0, 1e-12 * 100);
 }
 
+// Plane-strain match, associated (ψ = φ). In steady plastic flow the stress is stationary,
+// so the strain rate is all plastic, ∝ ∂f/∂σ = s/(2√J2) + η/3 I, and ε̇_zz = 0 forces
+// s_zz = −2√J2 η/3. With s_xx = s_yy (hence s_xx = √J2 η/3) and τ = s_xy, J2 = J2 η²/3 + τ²:
+// the rate is (η/2, η/2, 0, γ̇ = sqrt(1 − η²/3)) per unit Δγ. Driven along it from −100 I
+// the stress tends exponentially (rate ~ G/strength per unit strain) to that state, whose
+// in-plane principal stresses (centre p + √J2 η/3, radius τ) satisfy Mohr–Coulomb,
+// (σ1 − σ3) + (σ1 + σ3) sin φ = 2c cos φ: the defining property of the match.
+TEST(DruckerPrager, PlaneStrainMatchGivesMohrCoulombPlaneStrainStrength) {
+  const DruckerPrager m(E, nu, c, phi, phi, DruckerPrager::Match::PlaneStrain);
+  const double t = std::tan(M_PI / 6), eta_ps = 3 * t / std::sqrt(9 + 12 * t * t);
+  Voigt sigma0(4), rate(4), s;
+  sigma0 << -100, -100, -100, 0;
+  rate << eta_ps / 2, eta_ps / 2, 0, std::sqrt(1 - eta_ps * eta_ps / 3);
+  std::vector<double> state(ElastoPlastic::state_size, 0.0), next(state);
+  VoigtMatrix D;
+  for (int step = 1; step <= 200; ++step) {
+    m.update(5e-4 * step * rate, sigma0, state.data(), s, D, next.data());
+    state = next;
+  }
+  ASSERT_EQ(state[ElastoPlastic::plastic_flag_slot], 1.0);
+  const Voigt st = s + sigma0;
+  const double centre = 0.5 * (st(0) + st(1));
+  const double radius = std::sqrt(0.25 * (st(0) - st(1)) * (st(0) - st(1)) + st(3) * st(3));
+  EXPECT_NEAR(2 * radius + 2 * centre * 0.5, 2 * c * std::cos(M_PI / 6), 1e-8 * 100);
+}
+
 TEST(DruckerPrager, MatchIsOneOfThree) {
   ParameterSet p;
   p.set("youngs_modulus", E);

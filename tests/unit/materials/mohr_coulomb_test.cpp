@@ -97,6 +97,30 @@ TEST(MohrCoulomb, TensionCutoffCorner) {
   expect_return(m, t, s, MohrCoulomb::PlaneTension);
 }
 
+// Cut-off σt = 5 below the apex 10√3, trial (10, 9, 8): every cut-off plane active,
+// M = C, so Δλ = C⁻¹ (5, 4, 3) and σ = (5, 5, 5).
+TEST(MohrCoulomb, TensionCutoffApex) {
+  MohrCoulomb m(E, nu, c, phi, psi, 5.0);
+  expect_return(m, Vec3(10, 9, 8), Vec3::Constant(5.0), MohrCoulomb::TensionApex);
+}
+
+// Cut-off σt = 3, trial (12.9, 12.9, −33): the return ends where four planes meet,
+// σ1 = σ2 = σt on the yield surface: 1.5·3 − 0.5 σ3 = k gives σ = (3, 3, 9 − 2k); the
+// flow is a non-negative combination of four vectors, found through a 3-plane subset.
+// Found by a randomized search over trial stresses, which failed before those subsets.
+TEST(MohrCoulomb, TensionCutoffEdgeOnTheYieldSurface) {
+  MohrCoulomb m(E, nu, c, phi, psi, 3.0);
+  expect_return(m, Vec3(12.9, 12.9, -33), Vec3(3, 3, 9 - 2 * k), MohrCoulomb::PlaneTensionEdge);
+}
+
+// Cut-off σt = 3, trial (40, −30, −31): σ1 = σt and σ2 = σ3 on the main plane,
+// 1.5·3 − 0.5 σ3 = k: σ = (3, 9 − 2k, 9 − 2k).
+TEST(MohrCoulomb, RightEdgeWithTensionCutoff) {
+  MohrCoulomb m(E, nu, c, phi, psi, 3.0);
+  expect_return(m, Vec3(40, -30, -31), Vec3(3, 9 - 2 * k, 9 - 2 * k),
+                MohrCoulomb::EdgeRightTension);
+}
+
 TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   MohrCoulomb m(E, nu, c, phi, psi), cut(E, nu, c, phi, psi, 5.0), corner(E, nu, c, phi, psi, 2.0);
   expect_fd_tangent(m, Vec3(-20, -50, -150), MohrCoulomb::Plane);
@@ -106,7 +130,27 @@ TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   expect_fd_tangent(cut, Vec3(8, 2, 1), MohrCoulomb::Tension);
   expect_fd_tangent(cut, Vec3(8, 7, 1), MohrCoulomb::TensionEdge);
   expect_fd_tangent(corner, Vec3(20, -20, -30), MohrCoulomb::PlaneTension);
+  expect_fd_tangent(cut, Vec3(10, 9, 8), MohrCoulomb::TensionApex);
+  const MohrCoulomb cut3(E, nu, c, phi, psi, 3.0);
+  expect_fd_tangent(cut3, Vec3(12.9, 12.5, -33), MohrCoulomb::PlaneTensionEdge);
+  expect_fd_tangent(cut3, Vec3(40, -30, -31), MohrCoulomb::EdgeRightTension);
   expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
+}
+
+// Exactly equal trial principal stresses (σxx = σyy, as in a triaxial test): the tangent's
+// rotation term uses its limit ∂s_a/∂λ_a − ∂s_a/∂λ_b there; central differences (whose
+// perturbations split the pair) must agree. Left edge (σ1 = σ2) and right edge (σ2 = σ3).
+TEST(MohrCoulomb, TangentAtEqualTrialPrincipalStresses) {
+  MohrCoulomb m(E, nu, c, phi, psi);
+  for (const Vec3& t : {Vec3(-20, -20, -150), Vec3(-20, -150, -150)}) {
+    Voigt sigma0(6), strain(6), s;
+    sigma0 << t(0), t(1), t(2), 0, 0, 0;
+    strain << 1e-5, 1e-5, 1e-5, 0, 0, 0; // keeps the pair equal
+    VoigtMatrix D;
+    m.update(strain, sigma0, nullptr, s, D, nullptr);
+    const VoigtMatrix fd = test::fd_tangent(m, strain, sigma0, nullptr, 1e-9);
+    EXPECT_LT(test::relative_difference(D, fd, m.elasticity_matrix(6)), 1e-6) << D << "\n\n" << fd;
+  }
 }
 
 // With a huge cohesion nothing yields: stress and tangent equal linear_elastic's.

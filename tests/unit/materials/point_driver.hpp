@@ -56,51 +56,61 @@ inline double relative_difference(const VoigtMatrix& A, const VoigtMatrix& B,
   return (A - B).cwiseAbs().maxCoeff() / scale.cwiseAbs().maxCoeff();
 }
 
-/// Columns: unit principal directions for ordered principal values. In 3D a general
-/// rotation; in 2D (n = 4) σ1 and σ3 in the xy plane and σ2 along z, which must be principal.
-inline Mat3 principal_frame(int n) {
-  const double a = 0.4, b = 1.1, c = -0.7;
-  const Mat3 Rz = Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
-  if (n == 4) {
+/// Columns: unit principal directions for ordered principal values. Frames 0-2 are 2D
+/// (Voigt size 4): principal direction `frame` (σ1, σ2 or σ3) along z, which must be
+/// principal (the out-of-plane or hoop stress), the other two rotated in the xy plane.
+/// Frame 3 is a general 3D rotation.
+inline Mat3 principal_frame(int frame) {
+  const Mat3 Rz = Eigen::AngleAxisd(0.4, Vec3::UnitZ()).toRotationMatrix();
+  if (frame < 3) {
     Mat3 Q;
-    Q << Rz.col(0), Vec3::UnitZ(), Rz.col(1);
+    int in_plane = 0;
+    for (int a = 0; a < 3; ++a)
+      Q.col(a) = a == frame ? Vec3(Vec3::UnitZ()) : Vec3(Rz.col(in_plane++));
     return Q;
   }
-  return Rz * Eigen::AngleAxisd(b, Vec3::UnitY()).toRotationMatrix() *
-         Eigen::AngleAxisd(c, Vec3::UnitZ()).toRotationMatrix();
+  return Rz * Eigen::AngleAxisd(1.1, Vec3::UnitY()).toRotationMatrix() *
+         Eigen::AngleAxisd(-0.7, Vec3::UnitZ()).toRotationMatrix();
+}
+inline constexpr int num_frames = 4;
+inline int frame_voigt_size(int frame) {
+  return frame < 3 ? 4 : 6;
 }
 
-/// Puts the ordered principal trial stress in a rotated frame (3D and 2D), runs update()
-/// with it as the initial stress at zero strain from a virgin state, and expects the total
-/// stress Q diag(expected) Qᵀ within `tol` × the largest trial component, the branch code,
-/// and a returned stress on the yield surface.
+/// Puts the ordered principal trial stress in each principal_frame, runs update() with it
+/// as the initial stress at zero strain from a virgin state, and expects the total stress
+/// Q diag(expected) Qᵀ within `tol` × the largest trial component, the branch code, and a
+/// returned stress on the yield surface.
 inline void expect_return(const ElastoPlastic& m, const Vec3& trial, const Vec3& expected,
                           int branch, double tol = 1e-10) {
   const double scale = trial.cwiseAbs().maxCoeff();
-  for (int n : {4, 6}) {
-    const Mat3 Q = principal_frame(n);
+  for (int frame = 0; frame < num_frames; ++frame) {
+    const int n = frame_voigt_size(frame);
+    const Mat3 Q = principal_frame(frame);
     const Mat3 T = Q * trial.asDiagonal() * Q.transpose();
     const Voigt sigma0 = stress_voigt(T, n);
     const Voigt want = stress_voigt(Mat3(Q * expected.asDiagonal() * Q.transpose()), n);
-    EXPECT_EQ(m.return_stress(T, 0.0).branch, branch) << "n=" << n;
+    EXPECT_EQ(m.return_stress(T, 0.0).branch, branch) << "frame " << frame;
     Voigt s;
     VoigtMatrix D;
     double state[ElastoPlastic::state_size];
     m.update(Voigt::Zero(n), sigma0, nullptr, s, D, state);
     EXPECT_LT((s + sigma0 - want).cwiseAbs().maxCoeff(), tol * scale)
-        << "n=" << n << "\n got " << (s + sigma0).transpose() << "\nwant " << want.transpose();
+        << "frame " << frame << "\n got " << (s + sigma0).transpose() << "\nwant "
+        << want.transpose();
     EXPECT_NEAR(m.yield_function(stress_tensor(s + sigma0), state[ElastoPlastic::hardening_slot]),
                 0.0, tol * scale);
   }
 }
 
-/// The tangent against central differences, at strain `strain` on top of the initial stress
-/// whose principal values are `trial` (rotated as in expect_return), in 2D and 3D. The
+/// The tangent against central differences, at a small strain with every component on top
+/// of the initial stress whose principal values are `trial`, in each principal_frame. The
 /// error is measured against the elastic matrix (the tangent vanishes at an apex).
 inline void expect_fd_tangent(const ElastoPlastic& m, const Vec3& trial, int branch,
                               double tol = 1e-6) {
-  for (int n : {4, 6}) {
-    const Mat3 Q = principal_frame(n);
+  for (int frame = 0; frame < num_frames; ++frame) {
+    const int n = frame_voigt_size(frame);
+    const Mat3 Q = principal_frame(frame);
     const Voigt sigma0 = stress_voigt(Mat3(Q * trial.asDiagonal() * Q.transpose()), n);
     // A small strain with every component, so the principal directions rotate.
     Voigt strain(n);
@@ -111,9 +121,9 @@ inline void expect_fd_tangent(const ElastoPlastic& m, const Vec3& trial, int bra
     m.update(strain, sigma0, nullptr, s, D, nullptr);
     EXPECT_EQ(m.return_stress(stress_tensor(sigma0 + m.elasticity_matrix(n) * strain), 0.0).branch,
               branch)
-        << "n=" << n;
+        << "frame " << frame;
     const VoigtMatrix fd = fd_tangent(m, strain, sigma0, nullptr, 1e-9);
-    EXPECT_LT(relative_difference(D, fd, m.elasticity_matrix(n)), tol) << "n=" << n << "\n"
+    EXPECT_LT(relative_difference(D, fd, m.elasticity_matrix(n)), tol) << "frame " << frame << "\n"
                                                                        << D << "\n\n"
                                                                        << fd;
   }
