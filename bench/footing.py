@@ -66,7 +66,7 @@ def run(bipot, k, increments, workdir):
         sys.exit(f"{path}: exit {out.returncode}\n{out.stdout}\n{out.stderr}")
     text = out.stdout + out.stderr
     newton = [int(m.group(1)) for m in re.finditer(r"newton\s+(\d+)", text)]
-    cut = re.search(r"(\d+) cut-backs", text)
+    cut = re.search(r"(\d+) cut-backs?\b", text)
     t = re.search(r"time ([\d.]+) s = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+)"
                   r".*peak memory ([\d.]+) MB", text)
     dofs = re.search(r"(\d+) DOFs", text)
