@@ -9,19 +9,44 @@
 
 namespace bipot::app {
 
+namespace {
+
+// A node held by a bonded obstacle already has every component prescribed: a boundary
+// condition of its own would silently lose to the obstacle's motion.
+void held_node_conditions(const Model& model, std::vector<Index> held,
+                          std::vector<std::string>& problems) {
+  if (held.empty()) return;
+  std::sort(held.begin(), held.end());
+  for (const auto& stage : model.spec.stages)
+    for (const auto& bc : stage.boundary_conditions) {
+      if (!model.mesh.node_sets.count(bc.set) && !model.mesh.facet_sets.count(bc.set)) continue;
+      for (Index n : model.mesh.set_nodes(bc.set))
+        if (std::binary_search(held.begin(), held.end(), n)) {
+          problems.push_back(bc.where + ": " + model.mesh.describe_node(n) + " of set '" + bc.set +
+                             "' is held by a perfectly bonded obstacle, which prescribes its "
+                             "displacement; remove the condition or move the obstacle");
+          break;
+        }
+    }
+}
+
+} // namespace
+
 Model checked_model(const ProblemSpec& spec) {
   Model model = build_model(spec);
   // Every interface's pairs coincide on purpose; those that can open do not hold one body to
   // the other.
   std::vector<std::pair<Index, Index>> joined;
   std::vector<OpeningInterface> opening;
+  std::vector<Index> held; // by perfectly bonded obstacles
   for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
     const contact::Interface& iface = model.interfaces[k];
     OpeningInterface o;
     o.name = iface.name;
     o.smallest_gap = iface.pairs.empty() ? 0.0 : iface.pairs.front().gap;
     for (const auto& pair : iface.pairs) {
-      joined.emplace_back(pair.node_a, pair.node_b);
+      if (iface.obstacle && model.interface_laws[k]->is_tied()) held.push_back(pair.node_a);
+      if (pair.node_b != contact::rigid_obstacle) joined.emplace_back(pair.node_a, pair.node_b);
       o.pairs.emplace_back(pair.node_a, pair.node_b);
       o.smallest_gap = std::min(o.smallest_gap, pair.gap);
     }
@@ -31,11 +56,18 @@ Model checked_model(const ProblemSpec& spec) {
   const MeshSpec& m = model.spec.mesh;
   const std::string where = m.where + (m.has_blocks || m.file.empty() ? "" : ": " + m.file);
   std::vector<std::string> problems = conflicting_conditions(model.spec, model.mesh);
-  const auto mesh = mesh_problems(model.mesh, model.kinematics, joined, where);
+  held_node_conditions(model, held, problems);
+  std::vector<Index> references;
+  for (const RigidBody& b : model.rigid_bodies)
+    references.insert(references.end(), {b.reference, b.rotation});
+  const auto mesh = mesh_problems(model.mesh, model.kinematics, joined, where, references);
   problems.insert(problems.end(), mesh.begin(), mesh.end());
   // Rigid motions of a mesh with NaN nodes or inverted cells would only add noise.
   if (mesh.empty()) {
-    const auto free = free_rigid_body_modes(model.spec, model.mesh, opening);
+    std::vector<ReferenceNode> reference_nodes;
+    for (const RigidBody& b : model.rigid_bodies)
+      reference_nodes.push_back({b.name, b.nodes.empty() ? Index(-1) : b.nodes.front(), b.point});
+    const auto free = free_rigid_body_modes(model.spec, model.mesh, opening, held, reference_nodes);
     problems.insert(problems.end(), free.begin(), free.end());
   }
   if (!problems.empty()) throw InputError(problems);

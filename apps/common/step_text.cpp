@@ -24,7 +24,12 @@ std::string step_flags(const StepReport& r) {
   // `cutbacks` is the halving level the step was solved at (it grows back one level per
   // converged step); failures show as time in failed attempts.
   if (r.cutbacks > 0) parts.push_back("1/" + std::to_string(1L << r.cutbacks) + " step");
-  if (r.planned_step == 0) parts.push_back("sub-increment");
+  if (r.traced)
+    parts.push_back("traced");
+  else if (r.requested_output && r.planned_step == 0)
+    parts.push_back("output level");
+  else if (r.planned_step == 0)
+    parts.push_back("sub-increment");
   if (r.staggered > 0)
     parts.push_back("jump: staggered");
   else if (r.unstable && r.cutbacks == 0)
@@ -39,8 +44,9 @@ std::string step_flags(const StepReport& r) {
 
 std::string stepping_summary(const RunSummary& s, const std::string& program) {
   return program + ": stepping: " + plural(s.steps, "increment", "increments") + " (" +
-         std::to_string(s.steps - s.sub_increments) + " planned, " +
-         plural(s.sub_increments, "sub-increment", "sub-increments") + "), " +
+         std::to_string(s.steps - s.sub_increments - s.traced_increments) + " planned, " +
+         plural(s.sub_increments, "sub-increment", "sub-increments") + ", " +
+         std::to_string(s.traced_increments) + " traced), " +
          plural(s.cutbacks, "cut-back", "cut-backs") + ", " +
          plural(s.staggered_increments, "jump", "jumps") + "; " + seconds_text(s.failed_seconds) +
          " in failed attempts";

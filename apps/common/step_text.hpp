@@ -10,11 +10,11 @@ namespace bipot::app {
 
 /// "" for a planned increment that converged at once; otherwise "  (" + what happened + ")",
 /// e.g. "  (1/4 step, sub-increment, 0.41 s in failed attempts)", "  (jump: staggered)",
-/// "  (unstable)".
+/// "  (unstable)", "  (traced, unstable)" (path-following, load factor falling).
 std::string step_flags(const StepReport& r);
 
-/// "<program>: stepping: 83 increments (80 planned, 3 sub-increments), 2 cut-backs, 1 jump;
-/// 0.52 s in failed attempts".
+/// "<program>: stepping: 83 increments (70 planned, 3 sub-increments, 10 traced), 2 cut-backs,
+/// 1 jump; 0.52 s in failed attempts".
 std::string stepping_summary(const RunSummary& s, const std::string& program);
 
 } // namespace bipot::app

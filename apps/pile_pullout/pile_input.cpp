@@ -71,12 +71,28 @@ ParamSchema installation_schema() {
 }
 
 ParamSchema pullout_schema() {
-  ParamSchema s("stages.pullout", "upward displacement of the pile head in equal increments");
+  ParamSchema s("stages.pullout", "upward displacement of the pile head, in equal increments or "
+                                  "traced through the snap-back (control)");
   s.real("head_displacement", "m", "head displacement reached at the end").positive();
   s.integer("increments", "load increments of the stage").at_least(1);
   s.real("duration", "s", "pseudo-time of the stage (matters for a viscous RCCM interface only)")
       .positive()
       .with_default(1.0);
+  s.string("control", "how the head displacement advances: ramp (equal increments), "
+                      "dissipation (ramp, then steps of equal energy released by adhesion loss "
+                      "through the debonding snap-back) or arc_length (steps of equal interface "
+                      "displacement); docs/theory.md")
+      .one_of({"ramp", "dissipation", "arc_length"})
+      .with_default(std::string("ramp"));
+  // Optional without a default value: the analysis derives them (PathControl).
+  s.real("dissipation_step", "kJ",
+         "energy released by adhesion loss per traced step (control: dissipation); default: "
+         "the interfaces' adhesion energy / increments")
+      .positive()
+      .required = false;
+  s.integer("max_increments", "traced steps allowed (default 20 x increments)")
+      .at_least(1)
+      .required = false;
   return s;
 }
 

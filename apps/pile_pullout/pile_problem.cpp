@@ -1,5 +1,7 @@
 #include "apps/pile_pullout/pile_problem.hpp"
 
+#include "fem/input/problem_reader.hpp"
+
 namespace bipot::pile {
 
 namespace {
@@ -133,11 +135,18 @@ ProblemSpec make_problem(const PileSpec& pile) {
   pull.where = pile.pullout_where;
   pull.increments = static_cast<int>(pile.pullout.integer("increments"));
   pull.duration = pile.pullout.real("duration");
+  pull.control.type = pile.pullout.string("control");
+  pull.control.where = pile.pullout_where;
+  if (pile.pullout.has("dissipation_step"))
+    pull.control.dissipation_step = pile.pullout.real("dissipation_step");
+  if (pile.pullout.has("max_increments"))
+    pull.control.max_increments = static_cast<int>(pile.pullout.integer("max_increments"));
   supports(pull);
   pull.boundary_conditions.push_back(
       bc(kHead, 1, pile.pullout.real("head_displacement"), pile.pullout_where));
   p.stages = {geo, install, pull};
   p.output = pile.output;
+  check_stage_controls(p);
   return p;
 }
 

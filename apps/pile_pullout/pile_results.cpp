@@ -39,7 +39,7 @@ PileResults::PileResults(const Model& model, const std::string& directory,
   profiles_.open(profiles_path());
   if (!head_ || !profiles_) throw Error("cannot write the pile results in '" + directory_ + "'");
   head_ << "step,stage,time,head_displacement_mm,head_force_kN,newton_iterations,cutbacks,"
-           "unstable\n";
+           "unstable,traced\n";
   profiles_ << "step,head_displacement_mm,depth_m,skin_friction_kPa,contact_pressure_kPa,beta,"
                "slip_mm,opening_mm,status,stage\n";
   head_.flush();
@@ -56,9 +56,9 @@ void PileResults::record(const StepReport& report, const StaticAnalysis& analysi
   }
   if (!write_) return;
   char line[256];
-  std::snprintf(line, sizeof line, "%d,%s,%.9g,%.9g,%.9g,%d,%d,%d\n", report.global_step,
+  std::snprintf(line, sizeof line, "%d,%s,%.9g,%.9g,%.9g,%d,%d,%d,%d\n", report.global_step,
                 report.stage.c_str(), report.time, head_mm, last_.force, report.iterations,
-                report.cutbacks, report.unstable ? 1 : 0);
+                report.cutbacks, report.unstable ? 1 : 0, report.traced ? 1 : 0);
   head_ << line;
   head_.flush();
 

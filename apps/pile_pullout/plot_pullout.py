@@ -89,7 +89,7 @@ def run_spec(text):
 def plot_curves(args, Figure):
     fig = Figure(figsize=(7, 5), layout="constrained")
     ax = fig.add_subplot()
-    any_unstable = False
+    any_unstable = any_traced = False
     for label, folder in args.runs:
         path = os.path.join(folder, HEAD_CSV)
         rows = read_csv(path, HEAD_COLUMNS)
@@ -109,9 +109,22 @@ def plot_curves(args, Figure):
             ax.plot([r["head_displacement_mm"] for r in bad], [r["head_force_kN"] for r in bad],
                     linestyle="none", marker="o", markersize=8, markerfacecolor="none",
                     markeredgecolor=line.get_color())
+        # Path-following (control: dissipation / arc_length): the steps traced with the load
+        # factor as an unknown, the snap-back's falling branch among them. Older CSVs have no
+        # `traced` column.
+        traced = [r for r in rows if float(r.get("traced", 0) or 0) != 0]
+        if traced:
+            any_traced = True
+            ax.plot([r["head_displacement_mm"] for r in traced],
+                    [r["head_force_kN"] for r in traced], linestyle="none", marker="x",
+                    markersize=5, color=line.get_color())
     if any_unstable:
         ax.plot([], [], linestyle="none", marker="o", markerfacecolor="none",
-                markeredgecolor="0.3", label="unstable step (cut-backs / force drop)")
+                markeredgecolor="0.3",
+                label="unstable step (cut-backs / force drop / load falling)")
+    if any_traced:
+        ax.plot([], [], linestyle="none", marker="x", color="0.3",
+                label="traced step (path-following)")
     ax.set_xlabel("head displacement (mm, upward)")
     ax.set_ylabel("head force (kN, pull-out)")
     ax.set_title(args.title or "Pile pull-out: head force vs head displacement")

@@ -2,6 +2,7 @@
 
 #include "contact/interface/coincident_nodes.hpp"
 #include "contact/interface/detail/mesh_splitter.hpp"
+#include "contact/interface/interface_frame.hpp"
 #include "contact/interface/pair_geometry.hpp"
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
@@ -43,6 +44,17 @@ std::string unknown(const std::string& kind, const std::string& name,
 void check_definition(const Mesh& mesh, const InterfaceDefinition& d, std::vector<Facet>& facets,
                       std::vector<std::string>& problems) {
   const std::string p = prefix(d);
+  if (d.obstacle) {
+    if (!d.region_a.empty() || !d.region_b.empty() || d.facet_set_a.empty() ||
+        !d.facet_set_b.empty()) {
+      problems.push_back(p + "an obstacle is paired with one facet set of the body");
+      return;
+    }
+    const auto known = keys_of(mesh.facet_sets);
+    if (!mesh.facet_sets.count(d.facet_set_a))
+      problems.push_back(p + unknown("facet set", d.facet_set_a, known));
+    return;
+  }
   const bool regions = !d.region_a.empty() || !d.region_b.empty();
   const bool sets = !d.facet_set_a.empty() || !d.facet_set_b.empty();
   if (regions && sets) {
@@ -301,6 +313,58 @@ Interface pair_facet_sets(const Mesh& mesh, Kinematics kin, const InterfaceDefin
   return iface;
 }
 
+/// Obstacle mode: every node of facet set a paired with the rigid obstacle (node_b =
+/// rigid_obstacle), its signed distance as the pair's gap.
+Interface pair_with_obstacle(const Mesh& mesh, Kinematics kin, const InterfaceDefinition& d,
+                             bool tie_only, std::vector<std::string>& problems) {
+  Interface iface;
+  iface.name = d.name;
+  iface.initial_gap = d.initial_gap;
+  iface.obstacle = true;
+  if (!take_facets_a(mesh, d, iface, problems)) return iface;
+  const double diagonal = bounding_box_diagonal(mesh);
+  const double tol = 1e-9 * (diagonal > 0 ? diagonal : 1.0);
+  std::vector<Index> centred, off;
+  const int dim = spatial_dim(kin);
+  for (Index a : mesh.facet_set_nodes(d.facet_set_a)) {
+    const ObstacleDistance where = distance_to(*d.obstacle, mesh.nodes[a], dim);
+    if (!where.defined) centred.push_back(a);
+    if (tie_only && std::abs(where.distance) > tol) off.push_back(a);
+    InterfacePair pair;
+    pair.node_a = a;
+    pair.node_b = rigid_obstacle;
+    pair.gap = where.distance;
+    iface.pairs.push_back(pair);
+  }
+  const std::string shape = to_string(d.obstacle->shape);
+  if (!centred.empty())
+    problems.push_back(prefix(d) +
+                       node_list(mesh, centred, iface.pairs.size(),
+                                 "nodes of '" + d.facet_set_a + "' are on the " + shape +
+                                     "'s centre or axis, where no normal "
+                                     "is defined"));
+  if (!off.empty())
+    problems.push_back(prefix(d) + "perfect bonding holds the nodes of '" + d.facet_set_a +
+                       "' where they are on the obstacle's surface; " +
+                       node_list(mesh, off, iface.pairs.size(),
+                                 "nodes are off it (by more than " + format_length(tol) + " m)"));
+  return iface;
+}
+
+/// The frame of obstacle pairs: the obstacle's normal at the closest point, reversed so that
+/// it points from body 1 into the obstacle (docs/formulation.md §1), not the facets' normal
+/// (node-to-surface: a cylinder pressed on a plane is pushed along the plane's normal).
+void set_obstacle_frames(const Mesh& mesh, Kinematics kin, const RigidObstacle& obstacle,
+                         Interface& iface) {
+  const int dim = spatial_dim(kin);
+  for (InterfacePair& p : iface.pairs) {
+    const ObstacleDistance where = distance_to(obstacle, mesh.nodes[p.node_a], dim);
+    for (int i = 0; i < 3; ++i)
+      p.normal[i] = -where.normal[i];
+    complete_frame(p.normal, dim, p.tangent1, p.tangent2);
+  }
+}
+
 // Perfect bonding between separately meshed bodies: the pairs of facet-set interfaces become
 // shared nodes, exactly as a region interface that is not split, so the bodies are one mesh
 // and no constraint is needed. A pair's nodes must then be at one place (a normal pairing
@@ -317,7 +381,7 @@ void glue_facet_set_pairs(Mesh& mesh, const std::vector<InterfaceDefinition>& de
   std::vector<std::pair<Index, Index>> glue;
   std::vector<std::string> problems;
   for (std::size_t i = 0; i < defs.size(); ++i) {
-    if (!defs[i].region_a.empty()) continue;
+    if (!defs[i].region_a.empty() || defs[i].obstacle) continue; // obstacles: held by the caller
     for (const InterfacePair& p : out[i].pairs) {
       if (std::abs(p.gap) > tolerance) {
         problems.push_back(prefix(defs[i]) + "perfect bonding joins coincident nodes, but " +
@@ -335,7 +399,7 @@ void glue_facet_set_pairs(Mesh& mesh, const std::vector<InterfaceDefinition>& de
   const std::vector<Index> new_id = merge_nodes(mesh, glue);
   for (Interface& iface : out) {
     for (InterfacePair& p : iface.pairs)
-      p.node_a = new_id[p.node_a], p.node_b = new_id[p.node_b];
+      p.node_a = new_id[p.node_a], p.node_b = p.node_b < 0 ? p.node_b : new_id[p.node_b];
     for (Facet& f : iface.facets_a)
       for (Index& v : f.nodes)
         v = new_id[v];
@@ -374,7 +438,10 @@ std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
   }
   // Facet-set interfaces last, on the final node ids.
   for (std::size_t i = 0; i < defs.size(); ++i)
-    if (defs[i].region_a.empty()) out[i] = pair_facet_sets(work, kin, defs[i], problems);
+    if (defs[i].obstacle)
+      out[i] = pair_with_obstacle(work, kin, defs[i], tie_only, problems);
+    else if (defs[i].region_a.empty())
+      out[i] = pair_facet_sets(work, kin, defs[i], problems);
   if (!problems.empty()) throw InputError(problems);
   if (tie_only) glue_facet_set_pairs(work, defs, out);
 
@@ -383,6 +450,7 @@ std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
     std::sort(iface.pairs.begin(), iface.pairs.end(),
               [](const InterfacePair& x, const InterfacePair& y) { return x.node_a < y.node_a; });
     compute_pair_geometry(work, kin, iface, prefix(defs[i]));
+    if (defs[i].obstacle) set_obstacle_frames(work, kin, *defs[i].obstacle, iface);
   }
   mesh = std::move(work);
   return out;

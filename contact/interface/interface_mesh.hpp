@@ -17,7 +17,10 @@ namespace bipot::contact {
 /// A matched pair of nodes, node_a on body 1 and node_b on body 2: at the same position, or
 /// (normal pairing) node_b on the line through node_a along `normal`, `gap` away.
 struct InterfacePair {
-  Index node_a = -1, node_b = -1; ///< equal for a tied (not split) interface
+  /// Equal for a tied (not split) interface; node_b is -1 (rigid_obstacle) when body 2 is a
+  /// rigid obstacle: the pair's body-2 point is the obstacle's closest point, whose
+  /// displacement is the obstacle's (data, no DOFs).
+  Index node_a = -1, node_b = -1;
   /// m: (x_b − x_a)·n of the undeformed mesh, added to g_n with the interface's initial_gap;
   /// 0 unless the facet sets were paired along the normals (> 0 for bodies apart).
   double gap = 0;
@@ -32,6 +35,9 @@ struct InterfacePair {
   std::array<double, 3> tangent1{0, 0, 0}, tangent2{0, 0, 0};
 };
 
+/// node_b of a pair whose body 2 is a rigid obstacle.
+constexpr Index rigid_obstacle = -1;
+
 /// One discretised interface.
 struct Interface {
   std::string name;
@@ -40,6 +46,7 @@ struct Interface {
   /// output as a line/surface mesh and for recomputing weights.
   std::vector<Facet> facets_a;
   double initial_gap = 0; ///< m, added to g_n
+  bool obstacle = false;  ///< body 2 is a rigid obstacle: every node_b is rigid_obstacle
 };
 
 /// Builds the interfaces `defs` (in that order) on `mesh`, splitting it where needed.
@@ -66,17 +73,25 @@ struct Interface {
 /// Either way the pairing must be one-to-one and cover both sets. Facets of set a without a
 /// cell are oriented outward of the cell holding them.
 ///
+/// Obstacle mode (facet set a and a RigidObstacle): each node of set a is paired with the
+/// obstacle (node_b = rigid_obstacle); the pair's gap is the node's signed distance from the
+/// surface and its normal the obstacle's normal at the closest point, reversed (from body 1
+/// into the obstacle); the weight is that of the other modes. The mesh is not changed.
+/// With `tie_only` every node must lie on the surface (within 1e-9 × the diagonal): the
+/// caller holds them to the obstacle.
+///
 /// Weights, normals and tangents: see InterfacePair. Straight Line2/Line3 facets (and planar
 /// Tri3/Quad4 faces) are integrated exactly; Line3 corner nodes get L/6, mid-nodes 2L/3.
 ///
 /// Throws bipot::InputError, with every problem prefixed by `<where>: interface '<name>': `,
 /// for: both or neither mode given, an unknown region or facet set (listing the known ones and
-/// the nearest name), a region paired with itself, regions that do not touch, duplicate
-/// interface names, facet sets without coincident partners (listing up to 5 lonely nodes and
-/// the counts), nodes of set a with no node of b on their normal line or nodes of b that are
-/// no node's partner or two nodes' (the same way), or a node whose facets' normals cancel. Throws
-/// bipot::Error if the mesh's dimension does not match `kin`. On any exception `mesh` is left
-/// unchanged.
+/// the nearest name), a node of an obstacle interface at a circle's or sphere's centre or on a
+/// cylinder's axis, or off the surface of a tied one, a region paired with itself, regions that do
+/// not touch, duplicate interface names, facet sets without coincident partners (listing up to 5
+/// lonely nodes and the counts), nodes of set a with no node of b on their normal line or nodes of
+/// b that are no node's partner or two nodes' (the same way), or a node whose facets' normals
+/// cancel. Throws bipot::Error if the mesh's dimension does not match `kin`. On any exception
+/// `mesh` is left unchanged.
 std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
                                         const std::vector<InterfaceDefinition>& defs,
                                         bool tie_only);

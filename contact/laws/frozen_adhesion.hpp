@@ -18,6 +18,7 @@ public:
   std::string name() const override { return base_.name(); }
   bool is_tied() const override { return base_.is_tied(); }
   double initial_adhesion() const override { return base_.initial_adhesion(); }
+  double adhesion_energy(double beta) const override { return base_.adhesion_energy(beta); }
   double update_adhesion(double beta_old, const LocalVector& jump, double dtau,
                          LocalVector* dbeta_djump = nullptr) const override;
   LocalVector adhesive_traction(double beta, const LocalVector& jump,

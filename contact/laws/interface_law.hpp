@@ -52,6 +52,10 @@ public:
   /// A representative interface stiffness (kN/m³) solvers use to pick ρ automatically; 0 when
   /// the law has none.
   virtual double stiffness_scale() const { return 0.0; }
+
+  /// Energy per area (kJ/m²) that adhesion loss can still dissipate from intensity β (0 for
+  /// a law without adhesion), linear in β: what a dissipation-controlled step measures.
+  virtual double adhesion_energy(double /*beta*/) const { return 0.0; }
 };
 
 /// Converged values at one interface point at the end of the previous step.

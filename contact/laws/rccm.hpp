@@ -54,9 +54,11 @@ public:
   /// max(C_n, C_t).
   double stiffness_scale() const override;
 
-  double normal_stiffness() const { return cn_; }      ///< C_n (kN/m³)
-  double tangential_stiffness() const { return ct_; }  ///< C_t (kN/m³)
-  double decohesion_energy() const { return w_; }      ///< w (kJ/m²)
+  double normal_stiffness() const { return cn_; }     ///< C_n (kN/m³)
+  double tangential_stiffness() const { return ct_; } ///< C_t (kN/m³)
+  double decohesion_energy() const { return w_; }     ///< w (kJ/m²)
+  /// w β: the work of separation of the quasi-static law from β to 0 (docs/laws/rccm.md).
+  double adhesion_energy(double beta) const override { return w_ * beta; }
   double adhesion_viscosity() const { return alpha_; } ///< α (kN·s/m)
 
 private:

@@ -84,7 +84,8 @@ void InterfaceAssembler::add_to_pattern(SparsityPattern& pattern) const {
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     if (!owned_[i]) continue;
     const Index nodes[2] = {iface_.pairs[i].node_a, iface_.pairs[i].node_b};
-    dofs_.node_dofs(nodes, 2, block);
+    dofs_.node_dofs(nodes, nodes[1] == rigid_obstacle ? 1 : 2, block);
+    if (rigid_) rigid_->distribute(block);
     pattern.add_cell(block);
   }
 }
@@ -100,9 +101,12 @@ void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
     // 1/W_ii with W_ii ≈ 1/k_a + 1/k_b: the local flexibility of the two bodies at the pair,
     // per unit area (k from the bulk diagonal, smallest over the components).
     double ka = INFINITY, kb = INFINITY;
+    // A rigid body's slave (identity row) is infinitely stiff, like an obstacle.
+    auto stiff = [&](Index dof) { return rigid_ && rigid_->is_slave(dof); };
     for (int c = 0; c < dim_; ++c) {
-      ka = std::min(ka, diagonal_all[dofs_.dof(p.node_a, c)]);
-      kb = std::min(kb, diagonal_all[dofs_.dof(p.node_b, c)]);
+      if (!stiff(dofs_.dof(p.node_a, c))) ka = std::min(ka, diagonal_all[dofs_.dof(p.node_a, c)]);
+      if (p.node_b != rigid_obstacle && !stiff(dofs_.dof(p.node_b, c)))
+        kb = std::min(kb, diagonal_all[dofs_.dof(p.node_b, c)]);
     }
     const double k = (ka > 0 && kb > 0) ? 1.0 / (1.0 / ka + 1.0 / kb) : std::max(ka, kb);
     const double bulk = p.weight > 0 ? k / p.weight : k;
@@ -125,13 +129,18 @@ void InterfaceAssembler::absorb_displacements() {
     offset_[i] = committed_[i].jump;
     offset_[i](0) -= iface_.initial_gap + iface_.pairs[i].gap + gap_shift_;
   }
+  obstacle_u_ = {0, 0, 0}; // part of the jumps just kept, like the bodies' displacements
+}
+
+double InterfaceAssembler::u_b(const InterfacePair& p, int c, const std::vector<double>& u) const {
+  return p.node_b == rigid_obstacle ? obstacle_u_[c] : u[dofs_.dof(p.node_b, c)];
 }
 
 LocalVector InterfaceAssembler::local_jump(std::size_t i, const std::vector<double>& u) const {
   const InterfacePair& p = iface_.pairs[i];
   Eigen::Vector3d g = Eigen::Vector3d::Zero();
   for (int c = 0; c < dim_; ++c)
-    g(c) = u[dofs_.dof(p.node_b, c)] - u[dofs_.dof(p.node_a, c)];
+    g(c) = u_b(p, c, u) - u[dofs_.dof(p.node_a, c)];
   const Eigen::Vector3d local = pair_frame(p, dim_).transpose() * g;
   LocalVector out = local.head(dim_) + offset_[i];
   out(0) += iface_.initial_gap + p.gap + gap_shift_;
@@ -162,8 +171,7 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
     multiplier_change_ = std::max(multiplier_change_, p.weight * (resp.r - multiplier_[i]).norm());
     double u_size = 0;
     for (int c = 0; c < dim_; ++c)
-      u_size = std::max(
-          {u_size, std::abs(u[dofs_.dof(p.node_a, c)]), std::abs(u[dofs_.dof(p.node_b, c)])});
+      u_size = std::max({u_size, std::abs(u[dofs_.dof(p.node_a, c)]), std::abs(u_b(p, c, u))});
     const double err = std::numeric_limits<double>::epsilon() * p.weight * rho_[i] * u_size;
     roundoff_force_ += err * err;
     tangent_[i] = d.dt_djump;
@@ -199,14 +207,32 @@ void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMat
       }
     }
     const Index nodes[2] = {p.node_a, p.node_b};
-    dofs_.node_dofs(nodes, 2, block);
-    if (K) {
-      constraints.condense(block.data(), n, Kl.data(), Rl.data());
-      K->add_dense(block.data(), n, Kl.data());
-    } else {
-      constraints.condense(block.data(), n, Rl.data());
+    if (p.node_b == rigid_obstacle) {
+      // Node a's block only: the obstacle has no DOFs (Kl and Rl keep it first, row stride n).
+      for (int r = 0; r < dim_; ++r)
+        for (int c = 0; c < dim_; ++c)
+          Kl[r * dim_ + c] = Kt(r, c);
     }
-    R.add(block.data(), n, Rl.data());
+    int m = p.node_b == rigid_obstacle ? dim_ : n;
+    dofs_.node_dofs(nodes, m / dim_, block);
+    if (rigid_ && (rigid_->is_slave(block.front()) || rigid_->is_slave(block.back()))) {
+      // Onto the rigid body's reference node; Kl and Rl compacted to the m × m system first.
+      std::vector<double> Km(static_cast<std::size_t>(m) * m), Rm(Rl.begin(), Rl.begin() + m);
+      for (int r = 0; r < m; ++r)
+        for (int c = 0; c < m; ++c)
+          Km[r * m + c] = Kl[r * (m == n ? n : dim_) + c];
+      rigid_->distribute(block, Rm, K ? &Km : nullptr);
+      m = static_cast<int>(block.size());
+      Rl = Rm;
+      Kl = Km;
+    }
+    if (K) {
+      constraints.condense(block.data(), m, Kl.data(), Rl.data());
+      K->add_dense(block.data(), m, Kl.data());
+    } else {
+      constraints.condense(block.data(), m, Rl.data());
+    }
+    R.add(block.data(), m, Rl.data());
   }
 }
 

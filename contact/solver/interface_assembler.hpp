@@ -9,6 +9,8 @@
 /// the implicit β update). Every rank evaluates every pair (interfaces are small next to the
 /// bulk) so all ranks hold the whole interface state; each rank assembles the pairs whose
 /// node a it owns.
+/// Against a rigid obstacle (node_b = rigid_obstacle) u_b is the obstacle's displacement,
+/// data set per increment (set_obstacle_displacement()); only node a's block is assembled.
 
 #include "contact/interface/interface_mesh.hpp"
 #include "contact/laws/frozen_adhesion.hpp"
@@ -16,6 +18,7 @@
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 
 #include <vector>
 
@@ -57,6 +60,9 @@ public:
                      const DofDistribution& dist);
 
   const Interface& interface() const { return iface_; }
+  /// Rigid bodies (not owned, null for none): pairs on a body's nodes put their blocks on
+  /// its reference node (the augmented-Lagrangian solvers; generalized_newton refuses them).
+  void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
   const InterfaceLaw& law() const { return law_; }
   bool tied() const { return law_.is_tied(); }
   std::size_t num_pairs() const { return iface_.pairs.size(); }
@@ -115,6 +121,10 @@ public:
   /// expansion of a pile shaft at installation. Kept through displacement resets.
   void set_gap_shift(double shift) { gap_shift_ = shift; }
   double gap_shift() const { return gap_shift_; }
+  /// Obstacle interfaces: the rigid translation (m, global components, 0 beyond dim) of the
+  /// obstacle, i.e. u_b of every pair. Zeroed by absorb_displacements() (its jumps are kept).
+  void set_obstacle_displacement(const std::array<double, 3>& u) { obstacle_u_ = u; }
+  const std::array<double, 3>& obstacle_displacement() const { return obstacle_u_; }
 
   /// Last evaluation of every pair.
   const std::vector<PairResult>& results() const { return results_; }
@@ -137,10 +147,13 @@ public:
 
 private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
+  /// Component c of body 2's displacement at pair p: node b's, or the obstacle's.
+  double u_b(const InterfacePair& p, int c, const std::vector<double>& u) const;
 
   const Interface& iface_;
   const InterfaceLaw& law_;
   const DofMap& dofs_;
+  const RigidBodyConstraints* rigid_ = nullptr;
   int dim_;
   std::vector<bool> owned_;
   std::vector<double> rho_;
@@ -155,6 +168,7 @@ private:
   double multiplier_change_ = 0;
   double roundoff_force_ = 0;
   double gap_shift_ = 0;
+  std::array<double, 3> obstacle_u_{0, 0, 0};
   FrozenAdhesion frozen_law_;
   bool frozen_ = false;
   std::vector<double> frozen_beta_;

@@ -14,7 +14,7 @@ InterfaceNewtonSystem::InterfaceNewtonSystem(const std::vector<InterfaceAssemble
     for (const InterfacePair& p : ia->interface().pairs)
       for (int c = 0; c < dim_; ++c) {
         dofs_.push_back(dofs.dof(p.node_a, c));
-        dofs_.push_back(dofs.dof(p.node_b, c));
+        if (p.node_b != rigid_obstacle) dofs_.push_back(dofs.dof(p.node_b, c));
       }
   std::sort(dofs_.begin(), dofs_.end());
   dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
@@ -26,8 +26,8 @@ InterfaceNewtonSystem::InterfaceNewtonSystem(const std::vector<InterfaceAssemble
     for (std::size_t i = 0; i < ia->num_pairs(); ++i) {
       const InterfacePair& p = ia->interface().pairs[i];
       // DOFs are node-major (dof = node × dim + c), so a node's components are consecutive.
-      pairs_.push_back(
-          {ia, i, position(dofs.dof(p.node_a, 0)), position(dofs.dof(p.node_b, 0)), next});
+      const Index b = p.node_b == rigid_obstacle ? Index(-1) : position(dofs.dof(p.node_b, 0));
+      pairs_.push_back({ia, i, position(dofs.dof(p.node_a, 0)), b, next});
       next += dim_;
     }
   num_multipliers_ = next - num_dofs();
@@ -74,8 +74,11 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
     // Interface force on b (global components): Q (λ + A a).
     const Eigen::VectorXd force = Q * (A * r_in + A * adhesive);
     F.segment(m, d) = A * (r_in - res.r);
+    // Against an obstacle (s.b < 0) body 2's side is data: no row, no column.
+    const bool has_b = s.b >= 0;
+    auto held_b = [&](int c) { return !has_b || constrained[s.b + c]; };
     for (int c = 0; c < d; ++c) {
-      if (!constrained[s.b + c]) F(s.b + c) += force(c);
+      if (!held_b(c)) F(s.b + c) += force(c);
       if (!constrained[s.a + c]) F(s.a + c) -= force(c);
     }
     if (!J) continue;
@@ -84,7 +87,7 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
     const Eigen::MatrixXd Kc = A * Q * D * Q.transpose();         // ∂(force on b)/∂x_b
     const Eigen::MatrixXd Cx = -A * der.dr_djump * Q.transpose(); // ∂F_λ/∂x_b
     for (int r = 0; r < d; ++r) {
-      const bool free_b = !constrained[s.b + r], free_a = !constrained[s.a + r];
+      const bool free_b = !held_b(r), free_a = !constrained[s.a + r];
       for (int c = 0; c < d; ++c) {
         if (free_b) {
           (*J)(s.b + r, s.b + c) += Kc(r, c);
@@ -92,11 +95,11 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
           (*J)(s.b + r, m + c) += Q(r, c);
         }
         if (free_a) {
-          (*J)(s.a + r, s.b + c) -= Kc(r, c);
+          if (has_b) (*J)(s.a + r, s.b + c) -= Kc(r, c);
           (*J)(s.a + r, s.a + c) += Kc(r, c);
           (*J)(s.a + r, m + c) -= Q(r, c);
         }
-        (*J)(m + r, s.b + c) += Cx(r, c);
+        if (has_b) (*J)(m + r, s.b + c) += Cx(r, c);
         (*J)(m + r, s.a + c) -= Cx(r, c);
       }
     }
@@ -110,7 +113,7 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
     for (int c = 0; c < d; ++c) {
       bool acts = dF_dlambda.col(c).norm() != 0.0;
       for (int r = 0; r < d && !acts; ++r)
-        acts = Q(r, c) != 0.0 && (!constrained[s.b + r] || !constrained[s.a + r]);
+        acts = Q(r, c) != 0.0 && (!held_b(r) || !constrained[s.a + r]);
       if (!acts) (*J)(m + c, m + c) += 1.0;
     }
   }
@@ -121,6 +124,27 @@ double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) cons
   for (const PairSlots& s : pairs_)
     worst = std::max(worst, F.segment(s.multiplier, dim_).norm());
   return worst;
+}
+
+double InterfaceNewtonSystem::released_adhesion_energy(Eigen::VectorXd* grad) const {
+  double released = 0;
+  for (InterfaceAssembler* ia : interfaces_) {
+    const double per_beta = ia->law().adhesion_energy(1.0) - ia->law().adhesion_energy(0.0);
+    if (per_beta == 0.0) continue;
+    const std::vector<double> committed = ia->committed_adhesion();
+    for (const PairSlots& s : pairs_) {
+      if (s.iface != ia) continue;
+      const double A = ia->interface().pairs[s.pair].weight;
+      released += A * per_beta * (committed[s.pair] - ia->results()[s.pair].beta);
+      if (!grad) continue;
+      // jump = Qᵀ(u_b − u_a): ∂β/∂x_b = Q ∂β/∂jump, ∂β/∂x_a its opposite.
+      const Eigen::VectorXd g =
+          -A * per_beta * (ia->frame(s.pair) * ia->derivatives(s.pair).dbeta_djump);
+      grad->segment(s.b, dim_) += g;
+      grad->segment(s.a, dim_) -= g;
+    }
+  }
+  return released;
 }
 
 } // namespace bipot::contact

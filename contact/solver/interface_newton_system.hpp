@@ -3,9 +3,10 @@
 /// bulk has been condensed onto the interface DOFs.
 ///
 /// Unknowns: x, the displacement increments of the interface DOFs I (both copies of every
-/// pair's nodes), and λ_i = A_i r_i (kN, local frame), the irreversible interface force of
-/// every pair (Alart & Curnier 1991: the multipliers are unknowns of the Newton step, not
-/// moved by an outer loop). With the bulk condensed (Schur complement S, reduced load c):
+/// pair's nodes; node a alone against a rigid obstacle), and λ_i = A_i r_i (kN, local frame), the
+/// irreversible interface force of every pair (Alart & Curnier 1991: the multipliers are unknowns
+/// of the Newton step, not moved by an outer loop). With the bulk condensed (Schur complement S,
+/// reduced load c):
 ///
 ///     F_x  = c − S x + f_c(x, λ)                    equilibrium of I
 ///     F_λi = λ_i − A_i Proj_{K_μ̄}(τ_i),  τ_i = λ_i/A_i − ρ_i [Δg_t + (g_n + μ̄‖Δg_t‖) n]
@@ -52,11 +53,18 @@ public:
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const;
 
+  /// Σ_i A_i [E(β_i,committed) − E(β_i)], E = the law's adhesion_energy: the energy that
+  /// adhesion loss has released since the last converged increment, at the interfaces' last
+  /// evaluate() (kJ). With grad, adds its derivatives with respect to x (through β's
+  /// dependence on the jump): the row a dissipation-controlled step borders J with.
+  double released_adhesion_energy(Eigen::VectorXd* grad) const;
+
 private:
   struct PairSlots {
     InterfaceAssembler* iface;
     std::size_t pair;
-    Index a, b;       ///< position in dofs() of node a's / node b's first component
+    Index a, b;       ///< position in dofs() of node a's / node b's first component (b: -1
+                      ///< against a rigid obstacle)
     Index multiplier; ///< position of λ_i in the unknowns
   };
   std::vector<InterfaceAssembler*> interfaces_;

@@ -16,7 +16,8 @@ namespace bipot {
 
 using namespace analysis_detail;
 
-bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log) {
+bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
+                                                 PathStep* path) {
   const contact::ContactSolverOptions& copt = model.contact_solver;
   const contact::InterfaceNewtonSystem& sys = *newton_system;
   const Index nI = sys.num_dofs(), n = sys.size();
@@ -27,6 +28,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);
   }
+  move_obstacles(lambda);
   std::vector<Index> constrained_dofs;
   for (const auto& kv : target)
     constrained_dofs.push_back(kv.first);
@@ -49,6 +51,26 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     R.finish_assembly();
     if (refactor) K->finish_assembly();
     add_step_loads(constraints);
+    // Path-following: R is affine in the load factor (prescribed values and loads are), so
+    // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ.
+    DistributedVector R1(dist);
+    if (path) {
+      const DistributedVector R_lambda = R;
+      const DistributedVector F_lambda = F_step;
+      Constraints ahead;
+      for (const auto& [d, v] : target)
+        ahead.set(d, start[d] + (lambda + 1.0) * (v - start[d]) - u[d]);
+      F_step.axpy(1.0, F_cur);
+      F_step.axpy(-1.0, F_prev);
+      R.set_zero();
+      solid.assemble(u, ahead, nullptr, R);
+      R.finish_assembly();
+      add_step_loads(ahead);
+      R1.copy(R);
+      R1.axpy(-1.0, R_lambda);
+      R.copy(R_lambda);
+      F_step.copy(F_lambda);
+    }
     // The whole residual with the interface forces at u: the reference of the increment and,
     // for a nonlinear bulk, the test of the outer loop.
     for (const auto& ia : interfaces)
@@ -96,38 +118,62 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       schur_constrained = constrained_dofs;
     }
     t0 = std::chrono::steady_clock::now();
+    const Eigen::VectorXd c1 = path ? schur.reduce(R1) : Eigen::VectorXd();
     const Eigen::VectorXd c = schur.reduce(R);
     summary.solve_seconds += seconds_since(t0);
     const Eigen::MatrixXd& S = schur.schur();
 
-    // Newton on z = (x, λ): x the increments of I's DOFs from u, λ = A r the multipliers.
+    // Newton on z = (x, λ_c[, Δλ]): x the increments of I's DOFs from u, λ_c = A r the
+    // multipliers, Δλ the load factor's increment of a path-following step (one more row:
+    // its constraint).
+    const Index nz = path ? n + 1 : n;
     std::vector<double> trial = u;
-    Eigen::VectorXd z(n), F(n), dz(n), F_try(n);
-    Eigen::MatrixXd J(n, n);
+    Eigen::VectorXd z(nz), F(nz), dz(nz), F_try(nz), grad;
+    Eigen::MatrixXd J(nz, nz);
     z.head(nI).setZero();
-    z.tail(n - nI) = sys.multipliers();
+    z.segment(nI, n - nI) = sys.multipliers();
+    if (path) {
+      z.head(nI) = path->predictor_scale * path->x_prev;
+      z(n) = path->predictor_scale * path->dlambda_prev;
+    }
+    // The constraint's residual in force units, for the merit of the line search.
+    const double g_weight = path ? reference / path->scale() : 0.0;
     auto residual = [&](const Eigen::VectorXd& at, Eigen::VectorXd& out, Eigen::MatrixXd* jac) {
       for (Index k = 0; k < nI; ++k)
         trial[sys.dofs()[k]] = u[sys.dofs()[k]] + at(k);
-      sys.set_multipliers(at.tail(n - nI));
+      sys.set_multipliers(at.segment(nI, n - nI));
       for (const auto& ia : interfaces)
         ia->evaluate(trial, dtau);
       out.head(nI) = c - S * at.head(nI);
-      out.tail(n - nI).setZero();
+      out.tail(nz - nI).setZero();
       if (jac) {
         jac->setZero();
         jac->topLeftCorner(nI, nI) = -S;
       }
+      // add() touches rows and columns below n only: a bordered J and F pass as they are.
       sys.add(constrained_I, out, jac);
+      if (path) {
+        out.head(nI) += at(n) * c1;
+        out(n) = path->constraint(sys, at, jac ? &grad : nullptr);
+        if (jac) {
+          jac->col(n).head(nI) = c1;
+          jac->row(n) = grad.transpose();
+        }
+      }
     };
+    auto merit = [&](const Eigen::VectorXd& r) {
+      return path ? std::hypot(r.head(n).norm(), g_weight * r(n)) : r.norm();
+    };
+    ReusedLuSolver& newton_solver = path ? path_matrix : newton_matrix;
     for (int it = 0;; ++it, ++log.iterations) {
       t0 = std::chrono::steady_clock::now();
       residual(z, F, &J);
       const double force = F.head(nI).norm(), change = sys.multiplier_residual(F);
+      const bool constraint_met = !path || std::abs(F(n)) <= copt.tolerance * path->scale();
       summary.assembly_seconds += seconds_since(t0);
       if (linear) log.history.push_back(force / reference);
       log.contact = change / reference;
-      if (force <= floor && change <= copt.tolerance * reference) break;
+      if (force <= floor && change <= copt.tolerance * reference && constraint_met) break;
       if (!std::isfinite(force) || !std::isfinite(change)) {
         log.failure = "the interface residual is not finite";
         return false;
@@ -137,13 +183,13 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
         return false;
       }
       t0 = std::chrono::steady_clock::now();
-      const int factorizations = newton_matrix.factorizations();
-      dz = newton_matrix.solve(J, -F);
+      const int factorizations = newton_solver.factorizations();
+      dz = newton_solver.solve(J, -F);
       summary.solve_seconds += seconds_since(t0);
       ++summary.linear_solves;
-      summary.matrix_setups += newton_matrix.factorizations() - factorizations;
-      summary.linear_iterations += newton_matrix.last_iterations();
-      log.linear_iterations += newton_matrix.last_iterations();
+      summary.matrix_setups += newton_solver.factorizations() - factorizations;
+      summary.linear_iterations += newton_solver.last_iterations();
+      log.linear_iterations += newton_solver.last_iterations();
       if (!dz.allFinite()) {
         log.failure = "the generalized Jacobian is singular";
         return false;
@@ -153,9 +199,9 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
         // Backtracking on ‖F‖ (forces and multiplier residuals are both in kN). A kink of the
         // projection can make the full step overshoot; the residual norm is cheap here.
         t0 = std::chrono::steady_clock::now();
-        step = backtracking_step(F.norm(), [&](double s) {
+        step = backtracking_step(merit(F), [&](double s) {
           residual(z + s * dz, F_try, nullptr);
-          return F_try.norm();
+          return merit(F_try);
         });
         summary.assembly_seconds += seconds_since(t0);
       }
@@ -163,14 +209,29 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     }
     // The rest of the mesh: one back substitution; then u and the interface state at z.
     t0 = std::chrono::steady_clock::now();
+    if (path) {
+      // At the load factor found: the residual, the loads and the right-hand side that
+      // expand() back-substitutes.
+      path->dlambda = z(n);
+      path->x = z.head(nI);
+      R.axpy(z(n), R1);
+      F_step.axpy(z(n), F_cur);
+      F_step.axpy(-z(n), F_prev);
+      schur.reduce(R);
+    }
     schur.expand(z.head(nI), du);
     summary.solve_seconds += seconds_since(t0);
-    const std::vector<double> du_all = du.gather_all();
+    std::vector<double> du_all = du.gather_all();
+    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     for (std::size_t i = 0; i < u.size(); ++i)
       u[i] += du_all[i];
-    sys.set_multipliers(z.tail(n - nI));
+    sys.set_multipliers(z.segment(nI, n - nI));
     for (const auto& ia : interfaces)
       ia->evaluate(u, dtau);
+    if (!linear && path) {
+      log.failure = "path-following needs a linear bulk (a bulk material is nonlinear)";
+      return false;
+    }
     if (!linear) continue; // re-assemble the bulk at the new state and test it
     // Linear bulk: the condensation is exact, so the whole residual R0 − K du + f_c(u) is the
     // interface residual up to round-off. Check it (a matrix-vector product) rather than trust it.

@@ -35,6 +35,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);
   }
+  move_obstacles(lambda);
 
   Constraints constraints;
   double reference = 0.0, baseline = -1.0;
@@ -143,7 +144,8 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     log.linear_iterations += stats.iterations;
     summary.linear_iterations += stats.iterations;
     ++summary.linear_solves;
-    const std::vector<double> du_all = du.gather_all();
+    std::vector<double> du_all = du.gather_all();
+    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     double step = 1.0;
     if (has_contact && copt.line_search && !first_pass) {
       // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs

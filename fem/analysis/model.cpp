@@ -32,10 +32,23 @@ std::vector<std::string> keys_of(const std::map<std::string, std::vector<Index>>
 
 std::string unknown_set(const std::string& kind, const std::string& name,
                         const std::vector<std::string>& known) {
-  std::string msg = "no " + kind + " named '" + name + "' in the mesh";
-  const auto near = nearest_name(name, known);
-  if (!near.empty()) msg += " (did you mean '" + near + "'?)";
-  return msg + "; available: " + (known.empty() ? std::string("none") : join_names(known));
+  return unknown_in_mesh(kind, name, known);
+}
+
+contact::RigidObstacle rigid_obstacle(const ObstacleSpec& spec) {
+  using Shape = contact::RigidObstacle::Shape;
+  contact::RigidObstacle o;
+  o.shape = spec.type == "circle"     ? Shape::Circle
+            : spec.type == "sphere"   ? Shape::Sphere
+            : spec.type == "cylinder" ? Shape::Cylinder
+                                      : Shape::Plane;
+  const std::vector<double>& direction = o.shape == Shape::Cylinder ? spec.axis : spec.normal;
+  for (std::size_t i = 0; i < 3; ++i) {
+    o.point[i] = i < spec.point.size() ? spec.point[i] : 0.0;
+    o.direction[i] = i < direction.size() ? direction[i] : 0.0;
+  }
+  o.radius = spec.radius;
+  return o;
 }
 
 // Splits the mesh along every interface: tied ones (perfect bonding) keep their shared nodes,
@@ -54,9 +67,12 @@ void split_interfaces(Model& model) {
     } else if (spec.facet_sets.size() == 2) {
       def.facet_set_a = spec.facet_sets[0];
       def.facet_set_b = spec.facet_sets[1];
+    } else if (spec.facet_sets.size() == 1) { // against an obstacle
+      def.facet_set_a = spec.facet_sets[0];
     }
     def.initial_gap = spec.initial_gap;
     if (spec.pairing == "normal") def.pairing = contact::Pairing::Normal;
+    if (spec.obstacle) def.obstacle = rigid_obstacle(*spec.obstacle);
     def.where = spec.where;
     is_tied.push_back(model.interface_laws.back()->is_tied());
     (is_tied.back() ? tied : split).push_back(def);
@@ -223,6 +239,23 @@ Model build_model(const ProblemSpec& spec) {
             gap.where + ": " + msg + "; declared: " +
             (interface_names.empty() ? std::string("none") : join_names(interface_names)));
       }
+  for (const auto& stage : spec.stages)
+    for (const auto& d : stage.obstacle_displacements) {
+      const auto it = std::find_if(spec.interfaces.begin(), spec.interfaces.end(),
+                                   [&](const InterfaceSpec& i) { return i.name == d.interface; });
+      std::vector<std::string> obstacles;
+      for (const auto& iface : spec.interfaces)
+        if (iface.obstacle) obstacles.push_back(iface.name);
+      if (it == spec.interfaces.end() || !it->obstacle) {
+        std::string msg = it == spec.interfaces.end()
+                              ? "no interface named '" + d.interface + "'"
+                              : "interface '" + d.interface + "' has no obstacle";
+        const auto near = nearest_name(d.interface, obstacles);
+        if (!near.empty() && near != d.interface) msg += " (did you mean '" + near + "'?)";
+        problems.push_back(d.where + ": " + msg + "; interfaces with an obstacle: " +
+                           (obstacles.empty() ? std::string("none") : join_names(obstacles)));
+      }
+    }
   for (const auto& s : spec.initial_stress)
     if (!mesh.regions.count(s.region))
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
@@ -230,6 +263,7 @@ Model build_model(const ProblemSpec& spec) {
   split_interfaces(model);
   restrict_sets_to_regions(spec.mesh, model.mesh);
   check_initial_stress_admissible(model);
+  add_rigid_bodies(model); // last: its reference nodes end the mesh
   return model;
 }
 

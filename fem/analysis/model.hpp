@@ -4,6 +4,7 @@
 #include "contact/interface/interface_mesh.hpp"
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/element/kinematics.hpp"
 #include "fem/input/problem_spec.hpp"
 #include "fem/mesh/mesh.hpp"
@@ -23,7 +24,16 @@ struct Model {
   std::vector<contact::Interface> interfaces;       ///< split and paired, in input order
   std::vector<std::unique_ptr<contact::InterfaceLaw>> interface_laws; ///< one per interface
   contact::ContactSolverOptions contact_solver;
+  /// In input order; their reference nodes are the mesh's last nodes (two per body).
+  std::vector<RigidBody> rigid_bodies;
 };
+
+/// Adds the rigid bodies of model.spec to the model (rigid_bodies.cpp): their nodes, and two
+/// reference nodes per body appended to the mesh. Throws InputError, each problem at its
+/// place, for an unknown region or set (with the nearest name), a body without nodes, nodes
+/// of two bodies, a boundary condition on a body's node, and a stage
+/// naming an unknown body.
+void add_rigid_bodies(Model& model);
 
 /// Builds the mesh (generator or Gmsh file) and the materials, then checks everything that
 /// needs the mesh: every region has a material and every material a region, every set named

@@ -16,6 +16,32 @@ std::vector<std::string> component_names(const Model& model) {
   if (model.kinematics == Kinematics::PlaneStrain) return {"x", "y"};
   return {"x", "y", "z"};
 }
+// How each step was reached, last in every CSV row: the same flags as the progress lines.
+const std::vector<std::string> flag_columns = {"cutbacks", "staggered", "unstable", "traced"};
+void add_flags(const StepReport& r, std::vector<double>& row) {
+  row.insert(row.end(), {static_cast<double>(r.cutbacks), static_cast<double>(r.staggered),
+                         r.unstable ? 1.0 : 0.0, r.traced ? 1.0 : 0.0});
+}
+
+// rigid_bodies.csv: per body, its reference node's displacements and rotations, then what
+// it transmits to the body (forces, moments about the reference point).
+std::unique_ptr<CsvWriter> rigid_body_csv(const Model& model, const std::string& directory) {
+  std::vector<std::string> motion = {"ux", "uy", "rz"}, force = {"fx", "fy", "mz"};
+  if (model.kinematics == Kinematics::Axisymmetric)
+    motion = {"ur", "uz"}, force = {"fr", "fz"};
+  else if (model.kinematics == Kinematics::ThreeD)
+    motion = {"ux", "uy", "uz", "rx", "ry", "rz"}, force = {"fx", "fy", "fz", "mx", "my", "mz"};
+  std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
+  for (const RigidBody& b : model.rigid_bodies) {
+    for (const auto& c : motion)
+      cols.push_back(b.name + "_" + c);
+    for (const auto& c : force)
+      cols.push_back(b.name + "_" + c);
+  }
+  cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
+  return std::make_unique<CsvWriter>(directory + "/rigid_bodies.csv", cols);
+}
+
 } // namespace
 
 ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string directory)
@@ -38,8 +64,10 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
   if (rank == 0) {
     for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
       // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
-      // needs body 1 as a region: not for tied facet-set interfaces.
-      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2)
+      // needs body 1 as a region: not for tied facet-set interfaces (but tied obstacles:
+      // the reactions of the nodes they hold).
+      if (model.interface_laws[k]->is_tied() && model.spec.interfaces[k].between.size() != 2 &&
+          !model.interfaces[k].obstacle)
         continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);
@@ -68,6 +96,7 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       std::vector<std::string> cols = {"stage", "step", "time", "load_factor"};
       for (const auto& c : component_names(model))
         cols.push_back("force_" + c);
+      cols.insert(cols.end(), flag_columns.begin(), flag_columns.end());
       interface_csv_.push_back(
           std::make_unique<CsvWriter>(directory_ + "/interface_" + iface.name + ".csv", cols));
     }
@@ -75,7 +104,15 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
     const auto names = component_names(model);
     for (const auto& [set, component] : reaction_columns_)
       columns.push_back(reaction_sets_[set] + "_f" + names.at(component));
+    columns.insert(columns.end(), flag_columns.begin(), flag_columns.end());
     reactions_ = std::make_unique<CsvWriter>(reactions_path(), columns);
+    energy_ = std::make_unique<CsvWriter>(
+        directory_ + "/energy.csv",
+        std::vector<std::string>{"stage", "step", "time", "load_factor", "external_work",
+                                 "interference_work", "bulk_energy", "interface_energy",
+                                 "adhesion_dissipation", "viscous_dissipation", "contact_work",
+                                 "balance_error", "relative_error"});
+    if (!model.rigid_bodies.empty()) rigid_bodies_ = rigid_body_csv(model, directory_);
   }
 }
 
@@ -96,8 +133,28 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     reactions.push_back(analysis.reaction(s));
   for (const auto& [set, component] : reaction_columns_)
     row.push_back(reactions[set].at(component));
+  add_flags(report, row);
   if (reactions_) reactions_->write_row(row);
-  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end;
+  if (energy_) {
+    const EnergyTotals& e = report.energy;
+    // Relative to the work put in so far (0 while none has been).
+    const double put_in = std::abs(e.external_work) + std::abs(e.interference_work);
+    energy_->write_row({static_cast<double>(report.stage_index + 1),
+                        static_cast<double>(report.step), report.time, report.load_factor,
+                        e.external_work, e.interference_work, e.bulk_energy, e.interface_energy,
+                        e.adhesion_dissipation, e.viscous_dissipation, e.contact_work,
+                        e.balance_error(), put_in > 0 ? e.balance_error() / put_in : 0.0});
+  }
+  if (rigid_bodies_) {
+    row.resize(4);
+    for (std::size_t b = 0; b < model_.rigid_bodies.size(); ++b)
+      for (double v : analysis.rigid_body_state(b))
+        row.push_back(v);
+    add_flags(report, row);
+    rigid_bodies_->write_row(row);
+  }
+  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
+                   report.requested_output;
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
@@ -132,6 +189,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
     const auto f = ia.resultant();
     for (int c = 0; c < dim; ++c)
       row.push_back(f[c]);
+    add_flags(report, row);
     interface_csv_[k]->write_row(row);
     if (!interface_vtk_[k] || !vtk_due) continue;
 

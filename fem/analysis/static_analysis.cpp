@@ -12,7 +12,7 @@ using namespace analysis_detail;
 void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
     const auto& spec = model.spec.interfaces[k];
-    if (!interfaces[k]->tied() || spec.between.size() != 2) continue;
+    if (!interfaces[k]->tied() || spec.between.size() != 2) continue; // obstacles: below
     const int region = model.mesh.regions.at(spec.between[0]);
     DistributedVector& f = du; // scratch: du is not needed between increments
     f.set_zero();
@@ -40,6 +40,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   const auto run_start = std::chrono::steady_clock::now();
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
+  energy = std::make_unique<EnergyLedger>(interfaces);
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = 0.0;
   // Interface resultants (per interface and component) of the last step and the largest
@@ -54,6 +55,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     for (const auto& bc : stage.boundary_conditions)
       for (Index node : set_nodes(bc.set))
         target[dofs.dof(node, bc.component)] = bc.value;
+    begin_obstacle_stage(stage);
+    begin_rigid_body_stage(stage);
     start.clear();
     for (const auto& [d, v] : target)
       start[d] = u[d];
@@ -78,6 +81,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     // converges.
     auto step_start = std::chrono::steady_clock::now();
     double failed_seconds = 0;
+    PathControl path(stage, newton_system.get(), interfaces);
+    int traced_steps = 0;
     while (done < 1.0 - 1e-12) {
       const auto attempt_start = std::chrono::steady_clock::now();
       const double size = planned / std::pow(2.0, level);
@@ -86,91 +91,139 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       // has its result (a sliver below 1e-9 of a planned increment is merged into it).
       const int next_k = std::min(stage.increments,
                                   static_cast<int>(std::floor(done * stage.increments + 1e-9)) + 1);
-      const double next_level =
+      const double planned_level =
           next_k == stage.increments ? 1.0 : static_cast<double>(next_k) / stage.increments;
-      const double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
+      // A level the stage asks results at (output_at) is a stop as well.
+      const auto asked =
+          std::upper_bound(stage.output_at.begin(), stage.output_at.end(), done + 1e-9 * planned);
+      const bool asked_first =
+          asked != stage.output_at.end() && *asked < planned_level - 1e-9 * planned;
+      const double next_level = asked_first ? *asked : planned_level;
+      double lambda = done + size > next_level - 1e-9 * planned ? next_level : done + size;
       const std::vector<double> u_begin = u;
       IncrementLog log;
-      const double dtau = (lambda - done) * stage.duration;
-      // Predictor: extrapolate u (and, in solve_increment, the multipliers) along the last
-      // converged increment of this stage. Only the starting point changes; a retry after a
-      // cut-back extrapolates less. Default pile run: 529 -> 274 linear solves (with ρ
-      // factor 30), and far fewer cut-backs at the debonding front.
-      extrapolation = last_size > 0 ? (lambda - done) / last_size : 0.0;
-      if (last_size > 0)
-        for (std::size_t i = 0; i < u.size(); ++i)
-          u[i] += extrapolation * (u[i] - u_before_last[i]);
-      bool converged = solve_increment(lambda, dtau, log);
-      bool beta_can_change = false;
-      if (!converged) {
-        u = u_begin;
-        matrix_ready = false;
-        if (level < max_cutbacks) {
-          ++level;
-          ++summary.cutbacks;
+      if (path.following()) {
+        // Path-following: Δλ is an unknown of the step; a failure halves the step.
+        PathStep& ps = path.step(level);
+        extrapolation = 0.0;
+        const double dtau = path.pseudo_time_step() * stage.duration;
+        bool converged = solve_increment_exact(done, dtau, log, &ps);
+        if (converged && !path.forward(ps)) {
+          converged = false;
+          log.failure = "the step turned back along the path (its interface displacement "
+                        "opposes the last step's)";
+        }
+        if (converged) lambda = done + ps.dlambda;
+        if (converged && lambda > 1.0 - 1e-9 * planned) {
+          // The stage ends at λ = 1 exactly: back to the ramp for the last stretch.
+          u = u_begin;
+          path.finish();
+          continue;
+        }
+        if (!converged) {
+          u = u_begin;
+          if (level < max_cutbacks) {
+            ++level;
+            ++summary.cutbacks;
+            failed_seconds += seconds_since(attempt_start);
+            continue;
+          }
+          throw IncrementFailure(
+              path.failure_message(s, step + 1, done, level, log.history, log.failure),
+              residual_history_text(log.history));
+        }
+        ++summary.traced_increments;
+        if (path.too_many(++traced_steps))
+          throw SolverError(path.failure_message(
+              s, step + 1, done, level, {},
+              "the stage's " + std::to_string(traced_steps - 1) +
+                  " path-following increments (control.max_increments) did not reach load "
+                  "factor 1"));
+      } else {
+        const double dtau = (lambda - done) * stage.duration;
+        // Predictor: extrapolate u (and, in solve_increment, the multipliers) along the last
+        // converged increment of this stage. Only the starting point changes; a retry after a
+        // cut-back extrapolates less. Default pile run: 529 -> 274 linear solves (with ρ
+        // factor 30), and far fewer cut-backs at the debonding front.
+        extrapolation = last_size > 0 ? (lambda - done) / last_size : 0.0;
+        if (last_size > 0)
+          for (std::size_t i = 0; i < u.size(); ++i)
+            u[i] += extrapolation * (u[i] - u_before_last[i]);
+        bool converged = solve_increment(lambda, dtau, log);
+        bool beta_can_change = false;
+        if (!converged && path.switch_on_failure()) {
+          // A ramp that cannot follow a softening interface: dissipation control from here.
+          u = u_begin;
+          matrix_ready = false;
           failed_seconds += seconds_since(attempt_start);
           continue;
         }
-        // The fallback holds β and updates it: without adhesion left anywhere it would only
-        // repeat the failed solve.
-        beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
-          const std::vector<double> beta = ia->committed_adhesion();
-          return !ia->tied() &&
-                 std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
-        });
-        if (has_contact && beta_can_change) {
-          IncrementLog staggered;
-          converged = solve_increment_staggered(lambda, dtau, staggered);
-          if (converged) {
-            log = staggered;
-            ++summary.staggered_increments;
-          } else {
-            u = u_begin;
-            matrix_ready = false;
-            log.failure += "; then " + staggered.failure + " after " +
-                           std::to_string(staggered.staggered) + " beta updates";
+        if (!converged) {
+          u = u_begin;
+          matrix_ready = false;
+          if (level < max_cutbacks) {
+            ++level;
+            ++summary.cutbacks;
+            failed_seconds += seconds_since(attempt_start);
+            continue;
+          }
+          // The fallback holds β and updates it: without adhesion left anywhere it would only
+          // repeat the failed solve.
+          beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
+            const std::vector<double> beta = ia->committed_adhesion();
+            return !ia->tied() &&
+                   std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
+          });
+          if (has_contact && beta_can_change) {
+            IncrementLog staggered;
+            converged = solve_increment_staggered(lambda, dtau, staggered);
+            if (converged) {
+              log = staggered;
+              ++summary.staggered_increments;
+            } else {
+              u = u_begin;
+              matrix_ready = false;
+              log.failure += "; then " + staggered.failure + " after " +
+                             std::to_string(staggered.staggered) + " beta updates";
+            }
           }
         }
-      }
-      if (!converged) {
-        std::ostringstream msg;
-        msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
-            << stage.increments << " (load factor " << done << " -> " << lambda << " after "
-            << level << " cut-backs): " << log.failure << "; relative residual history";
-        // The first and last few residuals tell how it went (diverged, stalled, cycled); the
-        // whole history, hundreds of values after cut-backs, goes to the error's details.
-        const std::size_t n = log.history.size(), shown = 3;
-        std::ostringstream full;
-        full << "relative residual history of the failed increment (" << n << " values):\n";
-        for (std::size_t i = 0; i < n; ++i)
-          full << i + 1 << " " << log.history[i] << "\n";
-        if (n > 2 * shown) {
-          msg << " (" << n << " values, first and last " << shown << "):";
-          for (std::size_t i = 0; i < shown; ++i)
-            msg << " " << log.history[i];
-          msg << " ...";
-          for (std::size_t i = n - shown; i < n; ++i)
-            msg << " " << log.history[i];
-        } else {
-          msg << ":";
-          for (double h : log.history)
-            msg << " " << h;
+        if (!converged) {
+          std::ostringstream msg;
+          msg << "stage '" << stage.name << "' (" << s + 1 << "), step " << step + 1 << " of "
+              << stage.increments << " (load factor " << done << " -> " << lambda << " after "
+              << level << " cut-backs): " << log.failure << "; relative residual history";
+          // The first and last few residuals tell how it went (diverged, stalled, cycled); the
+          // whole history, hundreds of values after cut-backs, goes to the error's details.
+          const std::size_t n = log.history.size(), shown = 3;
+          if (n > 2 * shown) {
+            msg << " (" << n << " values, first and last " << shown << "):";
+            for (std::size_t i = 0; i < shown; ++i)
+              msg << " " << log.history[i];
+            msg << " ...";
+            for (std::size_t i = n - shown; i < n; ++i)
+              msg << " " << log.history[i];
+          } else {
+            msg << ":";
+            for (double h : log.history)
+              msg << " " << h;
+          }
+          msg << "; multiplier change " << log.contact
+              << ". To get through: more increments in this stage (smaller steps), "
+              << (beta_can_change ? "a larger adhesion_viscosity (debonding snap-backs), " : "")
+              << "or a looser contact_solver.tolerance if the residual history stalls just above "
+                 "it.";
+          throw IncrementFailure(msg.str(), residual_history_text(log.history));
         }
-        msg << "; multiplier change " << log.contact
-            << ". To get through: more increments in this stage (smaller steps), "
-            << (beta_can_change ? "a larger adhesion_viscosity (debonding snap-backs), " : "")
-            << "or a looser contact_solver.tolerance if the residual history stalls just above "
-               "it.";
-        throw IncrementFailure(msg.str(), full.str());
       }
-      for (const auto& ia : interfaces)
-        ia->commit();
+      path.end_increment(u, u_begin, lambda - done, log.iterations);
       auto t0 = std::chrono::steady_clock::now();
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
       reaction.set_zero();
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
+      const std::vector<double> internal = reaction.gather_all();
       // Commit after that cell loop at the converged u: generalized_newton's last bulk
       // assembly was at the start of the increment (the rest followed by condensation).
       solid.commit();
@@ -184,7 +237,17 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       }
       reaction_all = reaction.gather_all();
       reaction_scale = reaction.norm2();
+      // External forces on the bodies: the loads and the supports' reactions. Recorded
+      // before the interfaces commit (the ledger reads β before and after the step).
+      std::vector<double> external = F_step.gather_all();
+      for (std::size_t d = 0; d < external.size(); ++d)
+        external[d] += reaction_all[d];
+      energy->record(u, external, internal);
+      for (const auto& ia : interfaces)
+        ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
+      tied_obstacle_forces();
+      record_rigid_body_forces();
       summary.assembly_seconds += seconds_since(t0);
 
       StepReport rep;
@@ -192,10 +255,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.stage_index = static_cast<int>(s);
       rep.step = ++step;
       rep.steps = stage.increments;
-      rep.planned_step = lambda == next_level ? next_k : 0;
+      rep.traced = path.traced_last();
+      rep.dissipation = path.last_dissipation();
+      rep.energy = energy->totals();
+      rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
+      rep.requested_output = !rep.traced && lambda == next_level &&
+                             (asked_first || std::binary_search(stage.output_at.begin(),
+                                                                stage.output_at.end(), next_level));
       rep.stage_end = lambda == 1.0;
       rep.global_step = ++summary.steps;
-      if (rep.planned_step == 0) ++summary.sub_increments;
+      if (rep.planned_step == 0 && !rep.traced && !rep.requested_output) ++summary.sub_increments;
       rep.time = time + lambda * stage.duration;
       rep.load_factor = lambda;
       rep.iterations = log.iterations;
@@ -205,7 +274,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.residual_history = log.history;
       rep.cutbacks = level;
       rep.staggered = log.staggered;
-      rep.unstable = level > 0 || log.staggered > 0;
+      // A traced step on which the load factor falls is on the unstable branch.
+      rep.unstable = level > 0 || log.staggered > 0 || (rep.traced && lambda < done);
       // Snap-back: a resultant component lost over 20% of the largest value it has had, and
       // the loss is over 5% of the largest interface force of the model (so that a small
       // interface unloading smoothly, like a pile toe, is not flagged).
@@ -227,10 +297,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       if (writer) writer->write_step(rep, *this_analysis);
       summary.output_seconds += seconds_since(t0);
       if (on_step) on_step(rep);
-      last_size = lambda - done;
+      // After a traced step (Δλ may be negative) the ramp starts without extrapolation.
+      last_size = rep.traced ? 0.0 : lambda - done;
       u_before_last = u_begin;
       done = lambda;
-      if (level > 0) --level; // grow back towards the planned increment
+      if (rep.traced)
+        level = 0; // the path control keeps the step that converged
+      else if (level > 0)
+        --level; // grow back towards the planned increment
       step_start = std::chrono::steady_clock::now();
       failed_seconds = 0;
     }
@@ -241,11 +315,25 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.absorb_stress_into_initial(u);
       for (const auto& ia : interfaces)
         ia->absorb_displacements();
+      energy->reset_displacements();
       std::fill(u.begin(), u.end(), 0.0);
     }
   }
   summary.seconds = seconds_since(run_start);
   return summary;
+}
+
+std::vector<double> StaticAnalysis::rigid_body_state(std::size_t body) const {
+  const Model& m = impl_->model;
+  const RigidBody& b = m.rigid_bodies.at(body);
+  const int n = rigid_body_components(m.kinematics);
+  std::vector<double> out(2 * n, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const Index d = rigid_body_dof(b, impl_->dofs, m.kinematics, k);
+    out[k] = impl_->u[d];
+    out[n + k] = impl_->rigid_force_all.empty() ? 0.0 : impl_->rigid_force_all[d];
+  }
+  return out;
 }
 
 const std::vector<std::unique_ptr<contact::InterfaceAssembler>>&

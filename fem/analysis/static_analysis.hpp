@@ -9,6 +9,7 @@
 /// debonding jump, and only then does the run stop.
 
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/core/error.hpp"
@@ -38,6 +39,8 @@ struct StepReport {
   /// (after a cut-back, the sub-increments end exactly on the next planned level).
   int planned_step = 0;
   bool stage_end = false; ///< the last increment of the stage (load factor 1)
+  /// Ends on a load factor the stage's `output_at` asks for (results and VTK are written).
+  bool requested_output = false;
   int global_step = 0;    ///< converged increments so far, 1-based
   double time = 0;        ///< pseudo-time at the end of the increment (s)
   double load_factor = 0; ///< λ within the stage, in (0, 1]
@@ -57,6 +60,14 @@ struct StepReport {
   /// Cut back, or a snap-back: an interface resultant component lost over 20% of its largest
   /// value (and over 5% of the largest interface force of the model) in one step.
   bool unstable = false;
+  /// Traced by path-following (stage `control:` arc_length or dissipation): λ was an unknown
+  /// of the step and may have decreased (an unstable branch).
+  bool traced = false;
+  /// Energy adhesion loss released in the increment (kJ, what dissipation control measures);
+  /// 0 outside path-following stages.
+  double dissipation = 0;
+  /// The run's energy balance up to this increment (energy.csv).
+  EnergyTotals energy;
 };
 
 struct RunSummary {
@@ -66,7 +77,8 @@ struct RunSummary {
   int matrix_setups = 0;        ///< preconditioner/factorisation set-ups
   int staggered_increments = 0; ///< increments solved by the staggered fallback (jumps)
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
-  int sub_increments = 0;       ///< converged increments that end between planned levels
+  int sub_increments = 0;       ///< converged increments between planned and asked levels
+  int traced_increments = 0;    ///< increments traced by path-following
   double failed_seconds = 0;    ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time
@@ -105,6 +117,12 @@ public:
   /// Reaction force (f_int − f_ext) summed over the nodes of a node or facet set, one value
   /// per spatial component, at the last converged increment.
   std::vector<double> reaction(const std::string& set) const;
+  /// Rigid body `body` (Model::rigid_bodies order) at the last converged increment: its
+  /// reference node's components (rigid_body_components(): translations, then rotations)
+  /// followed by what the reference node transmits to the body along each (forces, kN;
+  /// moments, kN·m about the reference point): the applied load, or the reaction of a
+  /// prescribed component.
+  std::vector<double> rigid_body_state(std::size_t body) const;
   /// Interface states of the last converged increment (one assembler per interface).
   const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces() const;
   /// Committed cell averages of strain and stress for the cells this rank owns.

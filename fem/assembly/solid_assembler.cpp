@@ -1,5 +1,7 @@
 #include "fem/assembly/solid_assembler.hpp"
 
+#include "fem/assembly/rigid_body_constraint.hpp"
+
 #include "fem/core/error.hpp"
 #include "fem/element/quadrature.hpp"
 #include "fem/linalg/distributed_vector.hpp"
@@ -141,20 +143,23 @@ void SolidAssembler::loop(
 void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& constraints,
                               SparseMatrix* K, DistributedVector& R) {
   loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
-    const int nd = static_cast<int>(cell_dofs.size());
     for (auto& v : f_e)
-      v = -v; // residual contribution −f_int
+      v = -v;                                             // residual contribution −f_int
+    if (rigid_) rigid_->distribute(cell_dofs, f_e, &K_e); // before Dirichlet: on the masters
+    const int nd = static_cast<int>(cell_dofs.size());
     constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
     if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
     for (int a = 0; a < nd; ++a)
       R.add(cell_dofs[a], f_e[a]);
   });
+  if (rigid_ && K) rigid_->add_inactive_rows(R.distribution(), *K);
 }
 
 void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f,
                                     int region) {
   region_filter_ = region;
   loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
+    if (rigid_) rigid_->distribute(cell_dofs, f_e, nullptr);
     for (std::size_t a = 0; a < cell_dofs.size(); ++a)
       f.add(cell_dofs[a], f_e[a]);
   });
@@ -229,6 +234,7 @@ void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {
   std::vector<Index> cell_dofs;
   for (Index c : owned_cells_) {
     dofs_.cell_dofs(mesh_, c, cell_dofs);
+    if (rigid_) rigid_->distribute(cell_dofs);
     pattern.add_cell(cell_dofs);
   }
 }

@@ -16,6 +16,7 @@
 
 namespace bipot {
 
+class RigidBodyConstraints;
 class SparseMatrix;
 class SparsityPattern;
 class DistributedVector;
@@ -53,6 +54,9 @@ public:
   void absorb_stress_into_initial(const std::vector<double>& u);
 
   const std::vector<Index>& owned_cells() const { return owned_cells_; }
+  /// Rigid bodies (not owned; null for none): every cell system, pattern and internal force
+  /// is transformed onto their masters, and assemble() adds the inactive DOFs' identity rows.
+  void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
   /// Adds the DOFs of every owned cell to a sparsity pattern.
   void add_to_pattern(SparsityPattern& pattern) const;
   /// Committed cell averages (over quadrature points) of strain and stress of the owned
@@ -81,6 +85,7 @@ private:
   const DofMap& dofs_;
   std::vector<const Material*> materials_;
   std::vector<Index> owned_cells_;
+  const RigidBodyConstraints* rigid_ = nullptr;
   int region_filter_ = -1; ///< loop() skips cells of other regions when ≥ 0
   int nv_;
   std::map<CellType, std::unique_ptr<ElementValues>> values_;

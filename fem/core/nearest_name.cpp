@@ -42,4 +42,12 @@ std::string join_names(const std::vector<std::string>& names, const std::string&
   return out;
 }
 
+std::string unknown_in_mesh(const std::string& kind, const std::string& name,
+                            const std::vector<std::string>& known) {
+  std::string msg = "no " + kind + " named '" + name + "' in the mesh";
+  const auto near = nearest_name(name, known);
+  if (!near.empty()) msg += " (did you mean '" + near + "'?)";
+  return msg + "; available: " + (known.empty() ? std::string("none") : join_names(known));
+}
+
 } // namespace bipot

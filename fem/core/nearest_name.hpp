@@ -16,4 +16,8 @@ std::string nearest_name(const std::string& name, const std::vector<std::string>
 /// "a, b, c" — used in messages listing the allowed keys or registered names.
 std::string join_names(const std::vector<std::string>& names, const std::string& sep = ", ");
 
+/// "no <kind> named '<name>' in the mesh (did you mean '<nearest>'?); available: <known>".
+std::string unknown_in_mesh(const std::string& kind, const std::string& name,
+                            const std::vector<std::string>& known);
+
 } // namespace bipot

@@ -197,7 +197,8 @@ void check_coincident(const Mesh& mesh, const NodeCells& node_cells,
 
 std::vector<std::string> mesh_problems(const Mesh& mesh, Kinematics kin,
                                        const std::vector<std::pair<Index, Index>>& joined,
-                                       const std::string& where) {
+                                       const std::string& where,
+                                       const std::vector<Index>& reference_nodes) {
   BoundedReport not_finite(where, "nodes with a coordinate that is not a finite number");
   BoundedReport bad_cells(where, "inverted or degenerate cells");
   BoundedReport coincident(where, "pairs of coincident nodes that nothing joins");
@@ -208,7 +209,8 @@ std::vector<std::string> mesh_problems(const Mesh& mesh, Kinematics kin,
     finite_node[n] = finite(mesh.nodes[n]);
     if (!finite_node[n])
       not_finite.add(mesh.describe_node(n) + " has a coordinate that is not a finite number");
-    if (node_cells.count(n) == 0)
+    if (node_cells.count(n) == 0 &&
+        std::find(reference_nodes.begin(), reference_nodes.end(), n) == reference_nodes.end())
       unused.add(mesh.describe_node(n) +
                  " belongs to no cell: nothing gives its displacement a stiffness (the system "
                  "to solve would be singular)");

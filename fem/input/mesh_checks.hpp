@@ -24,10 +24,12 @@ namespace bipot {
 ///   cell and not joined by `joined` (directly or through a chain of pairs): the body is
 ///   cracked there. `joined` holds the node pairs the model joins on purpose, i.e. every
 ///   interface's pairs;
-/// - a node used by no cell: nothing gives its displacement a stiffness.
+/// - a node used by no cell: nothing gives its displacement a stiffness (but the rigid
+///   bodies' reference nodes, `reference_nodes`, whose stiffness comes from their bodies).
 /// At most 10 problems of each kind are listed, then a line with the number of the others.
 std::vector<std::string> mesh_problems(const Mesh& mesh, Kinematics kin,
                                        const std::vector<std::pair<Index, Index>>& joined,
-                                       const std::string& where);
+                                       const std::string& where,
+                                       const std::vector<Index>& reference_nodes = {});
 
 } // namespace bipot

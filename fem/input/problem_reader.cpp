@@ -27,6 +27,7 @@ const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
       {"initial_stress", "list of {region, type: geostatic|constant, ...}"},
       {"interfaces", "list of {name, between: [body1, body2] | facet_sets: [a, b], law, "
                      "parameters, initial_gap}"},
+      {"rigid_bodies", "list of {name, region | set, reference_point}"},
       {"contact_solver", "type: semismooth_newton | bipotential_uzawa, and its options"},
       {"stages", "list of load stages: name, increments, boundary_conditions, loads"},
       {"output", "directory, vtk, every"},
@@ -69,7 +70,8 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   }
 
   if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
-  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top);
+  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top, spec.kinematics);
+  if (top.has("rigid_bodies")) spec.rigid_bodies = input::read_rigid_bodies(top, dim);
   if (top.has("contact_solver"))
     spec.contact_solver = input::read_contact_solver(top);
   else
@@ -80,6 +82,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
+  input::check_stage_controls(spec, diag);
   return spec;
 }
 
@@ -101,6 +104,12 @@ ProblemSpec read_problem_file(const std::string& path) {
 
 ProblemSpec read_problem_text(const std::string& text, const std::string& file_name) {
   return parse(text, file_name, "");
+}
+
+void check_stage_controls(const ProblemSpec& spec) {
+  Diagnostics diag(spec.file);
+  input::check_stage_controls(spec, diag);
+  if (!diag.problems().empty()) throw InputError(diag.problems());
 }
 
 std::string describe_input_format() {

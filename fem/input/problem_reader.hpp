@@ -23,6 +23,11 @@ ProblemSpec read_problem_file(const std::string& path);
 /// resolved against the current directory.
 ProblemSpec read_problem_text(const std::string& text, const std::string& file_name);
 
+/// The rules of path-following stages that need the rest of the problem (contact solver,
+/// interfaces, the previous stage), for a ProblemSpec built by an app rather than read from
+/// a bipot file (read_problem_* apply them already). Throws InputError naming each stage.
+void check_stage_controls(const ProblemSpec& spec);
+
 /// The top-level keys and a one-line doc for each, for `bipot describe input` and the docs.
 std::string describe_input_format();
 

@@ -76,6 +76,42 @@ struct InterfaceGapSpec {
   std::string where;
 };
 
+/// The displacement of an interface's rigid obstacle reached at the end of a stage (ramped
+/// like a boundary condition from its value at the end of the previous stage; an obstacle a
+/// stage does not name keeps its displacement).
+struct ObstacleDisplacementSpec {
+  std::string interface;
+  std::vector<double> value; ///< m, one per spatial component
+  std::string where;
+};
+
+/// A condition on a rigid body's reference node in a stage: a prescribed displacement or
+/// rotation (`value`, reached at the end of the stage and ramped like a boundary condition),
+/// or a force or moment (`force`, ramped like a load). A component not named is free.
+struct RigidBodyConditionSpec {
+  std::string body;
+  /// Translations 0..d−1, then rotations (plane strain: 2 = rz; 3D: 3, 4, 5 = rx, ry, rz);
+  /// axisymmetric: 1 (z) only.
+  int component = 0;
+  double value = 0; ///< m or rad; kN or kN·m for a force (per unit thickness in plane strain)
+  bool force = false;
+  std::string where;
+};
+
+/// How a stage advances its load factor λ (0 → 1 over the stage): `ramp` (default) in the
+/// planned increments; `arc_length` (Crisfield, cylindrical: the interface displacements move
+/// by a given length each step, λ follows and may decrease); `dissipation` (ramp while the
+/// interfaces do not dissipate, then each step dissipates `dissipation_step`; Gutiérrez 2004):
+/// both trace snap-backs that a ramp jumps over.
+struct ControlSpec {
+  std::string type = "ramp";
+  double arc_length = 0;       ///< first arc length (m); 0: that of the first increment
+  double dissipation_step = 0; ///< kJ per step; 0: remaining adhesion energy / increments
+  int max_increments = 0;      ///< path-following steps allowed; 0: 20 × increments
+  std::string where;
+  bool path_following() const { return type != "ramp"; }
+};
+
 /// A stage lists the boundary conditions and loads in force at its end; values are ramped
 /// linearly over its increments from their state at the end of the previous stage.
 struct StageSpec {
@@ -86,11 +122,29 @@ struct StageSpec {
   std::vector<DirichletSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
   std::vector<InterfaceGapSpec> interface_gaps;
+  std::vector<ObstacleDisplacementSpec> obstacle_displacements;
+  std::vector<RigidBodyConditionSpec> rigid_body_conditions;
+  ControlSpec control;
+  /// Load factors in (0, 1], increasing, at which the ramp also ends an increment and the
+  /// results (VTK included) are written, besides the planned levels k/increments.
+  std::vector<double> output_at;
   std::string where;
 };
 
 /// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
 /// mesh, or `facet_sets: [a, b]` with coincident nodes or nodes facing each other.
+/// A rigid analytical surface as an interface's body 2 (validated: a known type, the
+/// vectors of the kinematics' size, a non-zero normal or axis, normalised, a radius > 0).
+struct ObstacleSpec {
+  std::string type; ///< "plane" (or "line"), "circle", "sphere", "cylinder"
+  std::vector<double>
+      point; ///< plane: a point on it; circle, sphere: centre; cylinder: on the axis
+  std::vector<double> normal; ///< plane: unit normal pointing out of the obstacle
+  std::vector<double> axis;   ///< cylinder: unit axis
+  double radius = 0;          ///< m
+  std::string where;
+};
+
 struct InterfaceSpec {
   std::string name;
   std::vector<std::string> between;    ///< two region names, or empty
@@ -101,6 +155,17 @@ struct InterfaceSpec {
   /// facet_sets only: "coincident" (same positions) or "normal" (node of b on the normal line
   /// of the node of a; their distance is the pair's initial gap)
   std::string pairing = "coincident";
+  /// `facet_sets: [a]` with an obstacle: body 2 is this rigid surface.
+  std::optional<ObstacleSpec> obstacle;
+  std::string where;
+};
+
+/// A rigid body: the nodes of a region's cells (or of a node or facet set) move with a
+/// reference node at `reference_point` (default: the nodes' centroid).
+struct RigidBodySpec {
+  std::string name;
+  std::string region, set; ///< exactly one given
+  std::vector<double> reference_point;
   std::string where;
 };
 
@@ -124,6 +189,7 @@ struct ProblemSpec {
   ParameterSet linear_solver; ///< validated against LinearSolver's schema
   std::vector<InitialStressSpec> initial_stress;
   std::vector<InterfaceSpec> interfaces;
+  std::vector<RigidBodySpec> rigid_bodies;
   ContactSolverSpec contact_solver;
   std::vector<StageSpec> stages;
   OutputSpec output;

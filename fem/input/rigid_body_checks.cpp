@@ -278,10 +278,14 @@ std::vector<bool> pressed_bodies(const ProblemSpec& spec, std::size_t s, const M
     for (std::size_t k = 0; k <= s; ++k)
       for (const auto& gap : spec.stages[k].interface_gaps)
         if (gap.interface == iface.name) shift = gap.value;
-    if (iface.smallest_gap + shift < 0)
+    bool moved = false; // an obstacle moved so far may push the body
+    for (std::size_t k = 0; k <= s; ++k)
+      for (const auto& d : spec.stages[k].obstacle_displacements)
+        moved = moved || d.interface == iface.name;
+    if (iface.smallest_gap + shift < 0 || moved)
       for (const auto& [a, b] : iface.pairs)
         for (Index n : {a, b})
-          if (bodies.of_node[n] >= 0) pressed[bodies.of_node[n]] = true;
+          if (n >= 0 && bodies.of_node[n] >= 0) pressed[bodies.of_node[n]] = true;
   }
   return pressed;
 }
@@ -289,7 +293,9 @@ std::vector<bool> pressed_bodies(const ProblemSpec& spec, std::size_t s, const M
 } // namespace
 
 std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Mesh& mesh,
-                                               const std::vector<OpeningInterface>& interfaces) {
+                                               const std::vector<OpeningInterface>& interfaces,
+                                               const std::vector<Index>& held_nodes,
+                                               const std::vector<ReferenceNode>& references) {
   const Bodies bodies(mesh);
   const std::size_t num_bodies = bodies.cells.size();
   const int num_components = spec.kinematics == "three_d" ? 3 : 2;
@@ -300,10 +306,12 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
   std::vector<std::vector<std::string>> held_by(num_bodies);
   for (const auto& iface : interfaces) {
     std::set<int> touched;
-    for (const auto& [a, b] : iface.pairs)
-      if (bodies.of_node[a] >= 0 && bodies.of_node[b] >= 0 &&
+    for (const auto& [a, b] : iface.pairs) {
+      if (b < 0 && bodies.of_node[a] >= 0) touched.insert(bodies.of_node[a]); // an obstacle
+      if (b >= 0 && bodies.of_node[a] >= 0 && bodies.of_node[b] >= 0 &&
           bodies.of_node[a] != bodies.of_node[b])
         touched.insert({bodies.of_node[a], bodies.of_node[b]});
+    }
     for (int b : touched)
       held_by[b].push_back(iface.name);
   }
@@ -321,13 +329,40 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
         if (bodies.of_node[node] >= 0 && seen.insert(3 * node + bc.component).second)
           fixed[bodies.of_node[node]].emplace_back(node, bc.component);
     }
+    for (Index node : held_nodes)
+      for (int c = 0; c < num_components; ++c)
+        if (bodies.of_node[node] >= 0 && seen.insert(3 * node + c).second)
+          fixed[bodies.of_node[node]].emplace_back(node, c);
+    // Rigid bodies' reference nodes: (component, reference) rows per body; loads press.
+    std::vector<std::vector<std::pair<int, const ReferenceNode*>>> held(num_bodies);
+    std::vector<bool> loaded(num_bodies, false);
+    for (const auto& c : stage.rigid_body_conditions)
+      for (const ReferenceNode& ref : references)
+        if (ref.name == c.body && ref.node >= 0 && bodies.of_node[ref.node] >= 0) {
+          const int b = bodies.of_node[ref.node];
+          if (c.force)
+            loaded[b] = true;
+          else
+            held[b].emplace_back(c.component, &ref);
+        }
     std::vector<bool> pressed;
     for (std::size_t b = 0; b < num_bodies; ++b) {
       const RigidModes& m = modes[b];
-      MatrixXd rows(fixed[b].size(), m.size());
+      MatrixXd rows(fixed[b].size() + held[b].size(), m.size());
       for (std::size_t r = 0; r < fixed[b].size(); ++r)
         for (int k = 0; k < m.size(); ++k)
           rows(r, k) = m.value(k, mesh.nodes[fixed[b][r].first], fixed[b][r].second);
+      const int nt = static_cast<int>(m.translated.size());
+      for (std::size_t r = 0; r < held[b].size(); ++r) {
+        const auto [component, ref] = held[b][r];
+        const Index row = static_cast<Index>(fixed[b].size() + r);
+        for (int k = 0; k < m.size(); ++k)
+          if (component < mesh.dim) // a translation: as a node at the reference point
+            rows(row, k) = m.value(k, ref->point, component);
+          else // a rotation about axis component − dim (2D: z)
+            rows(row, k) =
+                k < nt ? 0.0 : m.axis(k - nt)(mesh.dim == 2 ? 2 : component - 3) / m.radius;
+      }
       const MatrixXd free = null_space(rows);
       if (free.cols() == 0) continue;
       std::string message = stage.where + ": stage '" + stage.name +
@@ -336,7 +371,7 @@ std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Me
         // Conservative: some support of its own, or a push onto the interface, may hold it.
         if (free.cols() < m.size()) continue;
         if (pressed.empty()) pressed = pressed_bodies(spec, s, mesh, bodies, interfaces);
-        if (pressed[b]) continue;
+        if (pressed[b] || loaded[b]) continue;
         message += " hangs only on interface" + std::string(held_by[b].size() > 1 ? "s " : " ") +
                    quoted_list(held_by[b]) +
                    ", which can open, and no gravity, load, initial stress or interference "

@@ -7,6 +7,7 @@
 #include "fem/input/problem_spec.hpp"
 #include "fem/mesh/mesh.hpp"
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,10 +18,19 @@ namespace bipot {
 /// bodies it joins may come apart, so it does not hold one body to another.
 struct OpeningInterface {
   std::string name;
-  std::vector<std::pair<Index, Index>> pairs; ///< (node of body 1, node of body 2)
+  /// (node of body 1, node of body 2); the second is -1 against a rigid obstacle.
+  std::vector<std::pair<Index, Index>> pairs;
   /// m: the smallest initial normal opening of its pairs, initial_gap included; < 0 when the
   /// bodies start overlapping (pressed together).
   double smallest_gap = 0;
+};
+
+/// A rigid body's reference node (fem/assembly/rigid_body_constraint.hpp), for the checks:
+/// its conditions (the stage's `rigid_bodies`) act on the body holding `node`.
+struct ReferenceNode {
+  std::string name;                     ///< the rigid body's
+  Index node = -1;                      ///< one node of the rigid body
+  std::array<double, 3> point{0, 0, 0}; ///< the reference point
 };
 
 /// For every stage, the bodies its displacement conditions leave free to move rigidly. A body
@@ -40,7 +50,15 @@ struct OpeningInterface {
 /// One problem per stage and body, "<stage where>: stage '<name>': the body of region(s) ...
 /// (cells ...): free <motions>; ..."; at most 10, then a line with the number of the others.
 /// Conditions on sets the mesh lacks are skipped (reported elsewhere).
+/// A rigid obstacle holds a body like another body would; one that a stage (or an earlier
+/// one) moves may press it. `held_nodes` are fixed in every component in every stage (the
+/// nodes a perfectly bonded obstacle holds). A rigid body's reference node holds the body
+/// its nodes belong to in the components a stage prescribes (a translation as a node at the
+/// reference point would, a rotation that rotation), and a force or moment on it may press
+/// that body onto its interfaces.
 std::vector<std::string> free_rigid_body_modes(const ProblemSpec& spec, const Mesh& mesh,
-                                               const std::vector<OpeningInterface>& interfaces);
+                                               const std::vector<OpeningInterface>& interfaces,
+                                               const std::vector<Index>& held_nodes = {},
+                                               const std::vector<ReferenceNode>& references = {});
 
 } // namespace bipot

@@ -102,7 +102,11 @@ struct LinearSolver::Impl {
   void factorize_lu() {
     const auto t0 = std::chrono::steady_clock::now();
     lu->factorize(A);
-    lu_factor_seconds = seconds_since(t0);
+    // Every rank must take the same refresh decisions (they start collective factorisations
+    // and bound collective GMRES runs), so the times they rest on are the slowest rank's:
+    // local clocks differ under load, and two ranks once disagreed and waited for each other
+    // for ever (one in the factorisation's gather, the other in GMRES).
+    lu_factor_seconds = max_all(seconds_since(t0));
     lu_stale_seconds = 0;
     lu_iterations = 0;
     lu_current = true;
@@ -375,7 +379,7 @@ LinearSolveStats LinearSolver::solve(const DistributedVector& b, DistributedVect
       krylov(limit);
       if (o.preconditioner == "lu") {
         im.lu_iterations += stats.iterations;
-        const double krylov_seconds = seconds_since(start);
+        const double krylov_seconds = max_all(seconds_since(start)); // same on every rank
         im.lu_iteration_seconds = krylov_seconds / std::max(1, stats.iterations);
         if (stale_lu) im.lu_stale_seconds += krylov_seconds;
         if (!reached && stale_lu) { // refactorise now and finish from the current iterate

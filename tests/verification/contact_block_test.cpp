@@ -342,7 +342,7 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   ASSERT_TRUE(csv.good());
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "stage,step,time,load_factor,force_x,force_y");
+  EXPECT_EQ(line, "stage,step,time,load_factor,force_x,force_y,cutbacks,staggered,unstable,traced");
   std::vector<std::vector<double>> rows;
   while (std::getline(csv, line)) {
     std::vector<double> row;
@@ -400,6 +400,70 @@ TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
   EXPECT_EQ(sub, summary.sub_increments);
 }
 
+// The energy balance (energy.csv) of pressing, shearing to full sliding and lifting a block
+// on a Coulomb joint: external work = bulk elastic energy + contact work at every step. Each
+// term is a trapezoidal rule, exact here (linear bulk, friction at constant force while it
+// slides, unilateral contact), so the balance holds to round-off; friction dissipates
+// (contact work > 0 once the block has slid).
+TEST(ContactBlock, EnergyBalancesAtEveryStep) {
+  const Model model = build_model(read_problem_text(
+      block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift), "b.yaml"));
+  StaticAnalysis analysis(model);
+  EnergyTotals last;
+  analysis.run([&](const StepReport& r) {
+    const EnergyTotals& e = r.energy;
+    EXPECT_LT(std::abs(e.balance_error()), 1e-10 * std::abs(e.external_work))
+        << "stage " << r.stage << " step " << r.step;
+    last = e;
+  });
+  EXPECT_GT(last.contact_work, 0.0); // the sliding dissipated
+  EXPECT_EQ(last.adhesion_dissipation, 0.0);
+}
+
+// `output_at` asks for results at load factors between the planned levels: the ramp stops
+// exactly on each (flagged requested_output, not counted as sub-increments), the planned levels
+// keep theirs, and the VTK series gets those steps although `output.every` skips the others.
+TEST(ContactBlock, OutputAtAddsExactStops) {
+  const std::string stage = "  - name: press\n    increments: 2\n    output_at: [0.1, 0.5, 0.75]\n"
+                            "    boundary_conditions:\n"
+                            "      - {set: bottom, component: x, value: 0}\n"
+                            "      - {set: bottom, component: y, value: 0}\n"
+                            "      - {set: top, component: y, value: -1.0e-3}\n";
+  const std::string dir = "contact_block_output_at";
+  if (mpi_rank() == 0) std::filesystem::remove_all(dir);
+  barrier();
+  const Model model = build_model(read_problem_text(
+      block_input("", "", stage) + "output: {directory: " + dir + ", every: 100}\n", "b.yaml"));
+  ResultWriter writer(model, mpi_rank(), mpi_size());
+  StaticAnalysis analysis(model, {}, &writer);
+  std::vector<double> factors, requested;
+  std::vector<int> planned;
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    factors.push_back(r.load_factor);
+    planned.push_back(r.planned_step);
+    if (r.requested_output) requested.push_back(r.load_factor);
+  });
+  EXPECT_EQ(factors, (std::vector<double>{0.1, 0.5, 0.75, 1.0}));
+  EXPECT_EQ(planned, (std::vector<int>{0, 1, 0, 2}));
+  EXPECT_EQ(requested, (std::vector<double>{0.1, 0.5, 0.75}));
+  EXPECT_EQ(summary.sub_increments, 0);
+  // VTK at the three asked levels and the stage's end, although every: 100 skips the rest.
+  int vtk_files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    vtk_files += name.rfind("solution_", 0) == 0 && name.size() > 6 &&
+                 name.compare(name.size() - 6, 6, "_0.vtu") == 0;
+  }
+  EXPECT_EQ(vtk_files, 4);
+  barrier(); // every rank has counted before the next test may clean up
+  // Out of range or decreasing factors are refused with their place.
+  for (const std::string bad : {"[0.5, 0.2]", "[0, 0.5]", "[1.5]"}) {
+    std::string text = block_input("", "", stage);
+    text.replace(text.find("[0.1, 0.5, 0.75]"), 16, bad);
+    EXPECT_THROW(read_problem_text(text, "b.yaml"), InputError) << bad;
+  }
+}
+
 // A linear model without interfaces, loaded in 3 increments: the predictor solves increments
 // 2 and 3 exactly, and their residual must be judged against the model's forces (the last
 // reactions), not against its own round-off (which stalled them at 'relative residual 1').
@@ -451,8 +515,10 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
   ASSERT_TRUE(csv.good());
   std::string line;
   std::getline(csv, line);
-  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent.
-  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy");
+  // Sets in name order, then components; top_fx, left_fy and the free `right` are absent;
+  // then the step's flags.
+  EXPECT_EQ(line, "stage,step,time,load_factor,bottom_fx,bottom_fy,left_fx,top_fy,cutbacks,"
+                  "staggered,unstable,traced");
   std::vector<double> last;
   int rows = 0;
   while (std::getline(csv, line)) {
@@ -463,7 +529,9 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
     ++rows;
   }
   ASSERT_EQ(rows, 2);
-  ASSERT_EQ(last.size(), 8u);
+  ASSERT_EQ(last.size(), 12u);
+  EXPECT_EQ(last[8], 0.0);  // converged without a cut-back
+  EXPECT_EQ(last[11], 0.0); // ramped, not traced
   // The CSV keeps 17 digits: the values are the analysis's, exactly.
   EXPECT_EQ(last[4], bottom[0]);
   EXPECT_EQ(last[5], bottom[1]);

@@ -337,6 +337,44 @@ TEST(NormalPairing, GapClosesAtItsSizeAndSurvivesAReset) {
   EXPECT_LT(largest, 1e-9 * g0); // nothing moves in the hold stage
 }
 
+// The rigid-plane limit (issue 13): the same elastic cylinder pressed on a rigid plane y = 0
+// (an obstacle, node to surface), E* = E_cylinder / (1 − ν²). The flat body stays in the mesh
+// file, held and unloaded. The same checks and tolerances as above.
+TEST(Hertz, RigidPlaneHalfWidthAndPeakPressure) {
+  const test::ScratchDir scratch("hertz_rigid_plane");
+  const std::string mesh = (scratch.path / "hertz.msh").string();
+  write_mesh(mesh, 20 * a_design, [](double x) { return R - std::sqrt(R * R - x * x); });
+  std::string text = input(mesh, "generalized_newton", nu, press(1.05e-3, 2));
+  const std::string pairs = "  - {name: contact, facet_sets: [flat_contact, cylinder_contact], "
+                            "pairing: normal,\n";
+  const std::size_t at = text.find(pairs);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, pairs.size(),
+               "  - {name: contact, facet_sets: [cylinder_contact],\n"
+               "     obstacle: {type: plane, point: [0, 0], normal: [0, 1]},\n");
+  const Pressures res = solve(text);
+  EXPECT_NEAR(res.reaction, res.force, 1e-8 * std::abs(res.force)); // force on the plane
+  const double P = -2 * res.force; // the cylinder pushes the plane down
+  const double E_star = E_cylinder / (1 - nu * nu);
+  const double a = std::sqrt(4 * P * R / (pi * E_star));
+  const double p0 = 2 * P / (pi * a);
+  // Pairs sorted by x of the cylinder's nodes; the pressure is p = r_n (compression > 0).
+  std::size_t last = 0;
+  while (last + 1 < res.p.size() && res.p[last + 1] > 0)
+    ++last;
+  for (std::size_t i = last + 1; i < res.p.size(); ++i)
+    EXPECT_EQ(res.p[i], 0.0) << "x = " << res.x[i];
+  if (mpi_rank() == 0)
+    std::printf("[hertz] rigid plane: P = %.6g kN/m, a = %.6g m, last closed node x = %.6g m, "
+                "p0 = %.6g kPa, FE centre pressure %.6g kPa (%+.2f%%)\n",
+                P, a, res.x[last], p0, res.p[0], 100 * (res.p[0] / p0 - 1));
+  EXPECT_NEAR(res.x[last], a, h);
+  EXPECT_NEAR(res.p[0], p0, 0.03 * p0);
+  for (std::size_t i = 0; i < res.x.size() && res.x[i] < 0.9 * a; ++i)
+    EXPECT_NEAR(res.p[i], p0 * std::sqrt(1 - res.x[i] * res.x[i] / (a * a)), 0.01 * p0)
+        << "x = " << res.x[i];
+}
+
 TEST(NormalPairing, OnlyForFacetSetsAndTwoValues) {
   const std::string base =
       "kinematics: plane_strain\n"

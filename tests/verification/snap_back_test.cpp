@@ -11,6 +11,7 @@
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/bonded_column.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,13 +20,7 @@
 namespace bipot {
 namespace {
 
-constexpr double C = 1.0e4, w = 1.0, E = 1.0e3, L = 1.0, k = E / L, width = 0.1;
-const double g_star = std::sqrt(w / C), delta_star = g_star + std::sqrt(w * C) / k; // 0.11 m
-
-// Interface stress on the branch the loading follows (β only decreases), for opening g.
-double t_of(double g) {
-  return g <= g_star ? C * g : w * w / (C * g * g * g);
-}
+using namespace test::column;
 
 // The equilibrium opening at δ on the pre-peak branch (δ ≤ δ*) or after the jump: the root
 // of t(g) = k(δ − g) on the given bracket, by bisection to machine precision.
@@ -35,30 +30,6 @@ double opening(double delta, double lo, double hi) {
     (t_of(mid) - k * (delta - mid) > 0 ? hi : lo) = mid;
   }
   return 0.5 * (lo + hi);
-}
-
-std::string input(const std::string& solver) {
-  return "kinematics: plane_strain\n"
-         "mesh:\n  blocks:\n    cell: quad4\n"
-         "    x: {breaks: [0, 0.1], cells: [1]}\n"
-         "    y: {breaks: [-0.1, 0, 1.0], cells: [1, 2]}\n"
-         "    regions: [base, column]\n"
-         "  sets:\n    base_nodes: {min: [0, -0.1], max: [0.1, 0], region: base}\n"
-         "materials:\n"
-         "  base: {type: linear_elastic, youngs_modulus: 1.0e3, poissons_ratio: 0.0}\n"
-         "  column: {type: linear_elastic, youngs_modulus: 1.0e3, poissons_ratio: 0.0}\n"
-         "linear_solver: {method: direct}\n"
-         "interfaces:\n  - name: bond\n    between: [base, column]\n    law: rccm\n"
-         "    parameters: {normal_stiffness: 1.0e4, tangential_stiffness: 1.0e4, "
-         "decohesion_energy: 1.0, friction_coefficient: 0.0}\n"
-         "contact_solver: {type: " +
-         solver +
-         ", tolerance: 1.0e-10, max_cutbacks: 3}\n"
-         "stages:\n  - name: pull\n    increments: 12\n    boundary_conditions:\n"
-         "      - {set: base_nodes, component: x, value: 0}\n"
-         "      - {set: base_nodes, component: y, value: 0}\n"
-         "      - {set: top, component: x, value: 0}\n"
-         "      - {set: top, component: y, value: 0.12}\n";
 }
 
 class SnapBack : public ::testing::TestWithParam<const char*> {};

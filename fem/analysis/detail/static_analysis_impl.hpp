@@ -5,10 +5,12 @@
 
 #include "contact/solver/interface_newton_system.hpp"
 #include "fem/analysis/initial_stress.hpp"
+#include "fem/analysis/path_control.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/load_assembler.hpp"
+#include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
@@ -75,7 +77,41 @@ template <class Merit> double backtracking_step(double merit0, Merit merit) {
   return best < merit0 ? best_step : 1.0;
 }
 
+// The whole residual history of a failed increment, for failure.log.
+inline std::string residual_history_text(const std::vector<double>& history) {
+  std::ostringstream full;
+  full << "relative residual history of the failed increment (" << history.size() << " values):\n";
+  for (std::size_t i = 0; i < history.size(); ++i)
+    full << i + 1 << " " << history[i] << "\n";
+  return full.str();
+}
+
 } // namespace analysis_detail
+
+/// One path-following increment (stage `control:` arc_length or dissipation): the load
+/// factor's increment Δλ joins the unknowns of the generalized Newton step, bordered by one
+/// constraint g(x, λ_c, Δλ) = 0 (fem/analysis/path_constraint.cpp, docs/theory.md):
+///   arc_length:  ‖x‖ = L                                (Crisfield, cylindrical)
+///   dissipation: Σ A w (β_committed − β(x)) = Δτ          (Gutiérrez 2004)
+/// x the increment of the interface DOFs, β the adhesion the law gives at the trial jumps.
+struct PathStep {
+  enum class Kind { ArcLength, Dissipation } kind = Kind::ArcLength;
+  Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
+  double dlambda_prev = 0, length = 0; ///< Δλ_prev; arc_length: L (m)
+  Eigen::VectorXd u0, f0;              ///< dissipation: at the increment's start
+  double dissipation = 0;              ///< Δτ (kJ)
+  double predictor_scale = 1;          ///< z0 = scale × (x_prev, Δλ_prev)
+  // Out: the converged increment.
+  Eigen::VectorXd x;
+  double dlambda = 0;
+
+  /// g and, with grad (size n + 1), its gradient with respect to (x, λ_c, Δλ), at z after
+  /// the interfaces were evaluated there.
+  double constraint(const contact::InterfaceNewtonSystem& sys, const Eigen::VectorXd& z,
+                    Eigen::VectorXd* grad) const;
+  /// The constraint's own scale (L or Δτ): |g| ≤ tolerance × scale is converged.
+  double scale() const { return kind == Kind::ArcLength ? length : dissipation; }
+};
 
 struct StaticAnalysis::Impl {
   const Model& model;
@@ -84,6 +120,7 @@ struct StaticAnalysis::Impl {
   int dim;
   DofMap dofs;
   DofDistribution dist;
+  RigidBodyConstraints rigid; ///< the rigid bodies' master–slave transformation
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
@@ -98,6 +135,7 @@ struct StaticAnalysis::Impl {
   bool matrix_ready = false;                     ///< K and the solver hold the current tangent
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
+  std::unique_ptr<EnergyLedger> energy; ///< created by run(), once the interfaces exist
   /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
   /// Without it, an increment that the predictor already solves (a linear model under
   /// proportional loading) measured its residual against its own round-off and never
@@ -115,10 +153,28 @@ struct StaticAnalysis::Impl {
   std::map<Index, double> target, start;
   // Interface gap shifts (per interface) at the start and the end of the current stage.
   std::vector<double> gap_start, gap_target;
+  // Obstacle translations (per interface) at the start and the end of the current stage.
+  std::vector<std::array<double, 3>> obstacle_start, obstacle_target;
+  /// Reads the stage's obstacle displacements; holds the nodes of tied obstacle interfaces to
+  /// their obstacle (entries of `target`). Before `start` is filled (obstacle_motion.cpp).
+  void begin_obstacle_stage(const StageSpec& stage);
+  // Rigid bodies (rigid_body_motion.cpp): prescribed components of the reference nodes
+  // (entries of `target`, before `start` is filled), forces and moments on them plus the
+  // slaves' loads moved to the masters, and what the reference nodes transmit.
+  void begin_rigid_body_stage(const StageSpec& stage);
+  void add_rigid_body_loads(const StageSpec& stage, DistributedVector& F) const;
+  void record_rigid_body_forces();
+  std::vector<double> rigid_force_all; ///< f_int at the master DOFs (others 0), all DOFs
+  /// Sets every obstacle's translation at load factor `lambda` of the stage.
+  void move_obstacles(double lambda);
+  /// Tied obstacle interfaces, for output: the force on the obstacle is minus the reactions
+  /// of the nodes it holds.
+  void tied_obstacle_forces();
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),
         dofs(m.mesh.num_nodes(), dim), dist(m.mesh.num_nodes(), dim),
+        rigid(m.mesh, m.kinematics, dofs, m.rigid_bodies),
         cell_owned(analysis_detail::owned_cell_flags(m.mesh, dist)),
         solid(m.mesh, m.kinematics, dofs, m.material_of_region,
               analysis_detail::indices_of(cell_owned)),
@@ -132,9 +188,13 @@ struct StaticAnalysis::Impl {
       has_contact = has_contact || !interfaces.back()->tied();
     }
     SparsityPattern pattern;
+    if (!rigid.empty()) solid.set_rigid_bodies(&rigid);
     solid.add_to_pattern(pattern);
-    for (const auto& ia : interfaces)
+    rigid.add_inactive_rows(dist, pattern);
+    for (const auto& ia : interfaces) {
+      if (!rigid.empty()) ia->set_rigid_bodies(&rigid);
       ia->add_to_pattern(pattern);
+    }
     K = std::make_unique<SparseMatrix>(dist, pattern);
     std::vector<double> coords;
     for (Index n = dist.first_owned_node(); n < dist.first_owned_node() + dist.num_owned_nodes();
@@ -204,6 +264,7 @@ struct StaticAnalysis::Impl {
       }
     }
     F.finish_assembly();
+    add_rigid_body_loads(stage, F);
   }
 
   struct IncrementLog {
@@ -222,7 +283,10 @@ struct StaticAnalysis::Impl {
       if (!constraints.is_constrained(first + i)) r[i] += f[i];
   }
 
-  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log);
+  /// With `path`, `lambda` is the load factor at the increment's start and Δλ is solved for.
+  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log,
+                             PathStep* path = nullptr);
+  ReusedLuSolver path_matrix; ///< the bordered Newton matrices of path-following steps
   bool solve_increment(double lambda, double dtau, IncrementLog& log);
   static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
   // Predictor of the next increment: its size over the last converged one's in this stage

@@ -300,15 +300,15 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) 
   return out;
 }
 
-std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics) {
   std::vector<InterfaceSpec> out;
   const auto& laws = contact::interface_laws();
   UniqueNames names("interface", "each interface needs its own, for its output files "
                                  "interface_<name>.csv and interface_<name>.pvd");
-  const auto entries =
-      list_entries(top, "interfaces",
-                   {"name", "between", "facet_sets", "law", "parameters", "initial_gap", "pairing"},
-                   "expected a list of {name, between | facet_sets, law, parameters}");
+  const auto entries = list_entries(
+      top, "interfaces",
+      {"name", "between", "facet_sets", "obstacle", "law", "parameters", "initial_gap", "pairing"},
+      "expected a list of {name, between | facet_sets, law, parameters}");
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -317,7 +317,9 @@ std::vector<InterfaceSpec> read_interfaces(const YamlMap& top) {
     spec.name = names.read(m, i);
     m.strings("between", spec.between);
     m.strings("facet_sets", spec.facet_sets);
-    if (m.has("between") == m.has("facet_sets"))
+    if (m.has("obstacle"))
+      read_obstacle_interface(m, kinematics, spec);
+    else if (m.has("between") == m.has("facet_sets"))
       m.error("between", "give exactly one of 'between: [region_a, region_b]' or "
                          "'facet_sets: [set_a, set_b]'");
     else if (m.has("between") && spec.between.size() != 2)

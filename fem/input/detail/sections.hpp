@@ -15,8 +15,19 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
 const std::vector<std::string>& component_names(const std::string& kinematics);
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics);
+/// Cross-section rules of path-following stages (need the contact solver and interfaces).
+void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag);
 OutputSpec read_output(const YamlMap& top);
-std::vector<InterfaceSpec> read_interfaces(const YamlMap& top);
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics);
+/// An interface with `obstacle` (obstacle_section.cpp): the obstacle, and the one facet set
+/// of the body it needs (no `between`, no `pairing`).
+void read_obstacle_interface(const YamlMap& m, const std::string& kinematics, InterfaceSpec& spec);
+/// The `rigid_bodies` section and a stage's `rigid_bodies` conditions
+/// (rigid_body_section.cpp).
+std::vector<RigidBodySpec> read_rigid_bodies(const YamlMap& top, int dim);
+void read_stage_rigid_bodies(const YamlMap& stage, const std::string& kinematics, StageSpec& st);
+/// A stage's `obstacle_displacements` (obstacle_section.cpp).
+void read_obstacle_displacements(const YamlMap& stage, int dim, StageSpec& st);
 ContactSolverSpec read_contact_solver(const YamlMap& top);
 
 /// Reads the map at `parent[key]` as parameters of `schema` (keys in `skip` are left to the

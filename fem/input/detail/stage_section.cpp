@@ -105,6 +105,45 @@ void read_interface_gaps(const YamlMap& m, StageSpec& st) {
   }
 }
 
+// `control: dissipation` or `control: {type: dissipation, dissipation_step: 0.01}`.
+void read_control(const YamlMap& m, StageSpec& st) {
+  static const std::vector<std::string> types = {"ramp", "arc_length", "dissipation"};
+  ControlSpec& c = st.control;
+  c.where = m.where("control");
+  if (m.node("control").IsScalar()) {
+    m.string("control", c.type);
+  } else {
+    const YamlMap cm(m.node("control"), m.path("control"), m.diag(),
+                     {"type", "arc_length", "dissipation_step", "max_increments"});
+    if (!cm.valid()) return;
+    cm.string("type", c.type, true);
+    if (cm.real("arc_length", c.arc_length) && cm.has("arc_length") && !(c.arc_length > 0))
+      cm.error("arc_length", "value must be > 0 (the length of a path-following step)");
+    if (cm.real("dissipation_step", c.dissipation_step) && cm.has("dissipation_step") &&
+        !(c.dissipation_step > 0))
+      cm.error("dissipation_step", "value must be > 0 kJ (the energy each step dissipates)");
+    if (cm.integer("max_increments", c.max_increments) && cm.has("max_increments") &&
+        (c.max_increments < 1 || c.max_increments > max_increments_per_stage))
+      cm.error("max_increments", "value " + std::to_string(c.max_increments) +
+                                     " is out of range [1, " +
+                                     std::to_string(max_increments_per_stage) + "]");
+    const bool arc = c.type == "arc_length", dis = c.type == "dissipation";
+    if (cm.has("arc_length") && !arc)
+      cm.error("arc_length", "only for type: arc_length (this control is " + c.type + ")");
+    if (cm.has("dissipation_step") && !dis)
+      cm.error("dissipation_step", "only for type: dissipation (this control is " + c.type + ")");
+    if (cm.has("max_increments") && !arc && !dis)
+      cm.error("max_increments", "only for path-following controls (arc_length, dissipation)");
+  }
+  if (std::find(types.begin(), types.end(), c.type) == types.end()) {
+    const std::string near = nearest_name(c.type, types);
+    m.error("control", "unknown control type '" + c.type + "'" +
+                           (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                           "; allowed: " + join_names(types));
+    c.type = "ramp";
+  }
+}
+
 } // namespace
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics) {
@@ -114,10 +153,11 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries = list_entries(top, "stages",
-                                    {"name", "increments", "duration", "reset_displacements",
-                                     "boundary_conditions", "loads", "interface_gaps"},
-                                    expected);
+  const auto entries = list_entries(
+      top, "stages",
+      {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads",
+       "interface_gaps", "obstacle_displacements", "rigid_bodies", "control", "output_at"},
+      expected);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
@@ -134,9 +174,88 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
+    if (m.has("rigid_bodies")) read_stage_rigid_bodies(m, kinematics, st);
+    if (m.has("obstacle_displacements"))
+      read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
+    if (m.has("control")) read_control(m, st);
+    if (m.reals("output_at", st.output_at) && m.has("output_at")) {
+      for (std::size_t k = 0; k < st.output_at.size(); ++k) {
+        const double f = st.output_at[k];
+        if (!(f > 0 && f <= 1))
+          m.error("output_at", "load factor " + std::to_string(f) +
+                                   " is out of range (0, 1] (fractions of the stage)");
+        else if (k > 0 && !(f > st.output_at[k - 1]))
+          m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
+                                   std::to_string(st.output_at[k - 1]) + ")");
+      }
+    }
     out.push_back(std::move(st));
   }
   return out;
+}
+
+namespace {
+
+bool same_load(const LoadSpec& a, const LoadSpec& b) {
+  return a.type == b.type && a.set == b.set && a.pressure == b.pressure && a.traction == b.traction;
+}
+
+// Whether λ scales anything in stage i: a condition whose value differs from the previous
+// stage's (0 if none), or a load that the previous stage did not have.
+bool stage_scales_something(const std::vector<StageSpec>& stages, std::size_t i) {
+  for (const DirichletSpec& bc : stages[i].boundary_conditions) {
+    double before = 0;
+    if (i > 0)
+      for (const DirichletSpec& old : stages[i - 1].boundary_conditions)
+        if (old.set == bc.set && old.component == bc.component) before = old.value;
+    if (bc.value != before) return true;
+  }
+  for (const LoadSpec& ld : stages[i].loads) {
+    const bool zero =
+        (ld.type == LoadSpec::Type::Pressure && ld.pressure == 0) ||
+        (ld.type == LoadSpec::Type::Traction &&
+         std::all_of(ld.traction.begin(), ld.traction.end(), [](double t) { return t == 0; }));
+    const bool had = i > 0 && std::any_of(stages[i - 1].loads.begin(), stages[i - 1].loads.end(),
+                                          [&](const LoadSpec& o) { return same_load(o, ld); });
+    if (!zero && !had) return true;
+  }
+  return false;
+}
+
+} // namespace
+
+void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag) {
+  const bool contact =
+      std::any_of(spec.interfaces.begin(), spec.interfaces.end(),
+                  [](const InterfaceSpec& f) { return f.law != "perfect_bonding"; });
+  for (std::size_t i = 0; i < spec.stages.size(); ++i) {
+    const StageSpec& st = spec.stages[i];
+    if (!st.control.path_following()) continue;
+    const std::string what = "control " + st.control.type + ": ";
+    if (spec.contact_solver.type != "generalized_newton")
+      diag.error_at(st.control.where, what +
+                                          "path-following borders the generalized Newton step; "
+                                          "it needs contact_solver.type: generalized_newton "
+                                          "(the input has " +
+                                          spec.contact_solver.type + ")");
+    else if (!contact)
+      diag.error_at(st.control.where,
+                    what + "path-following follows the interfaces' equations; the model has no "
+                           "interface with a contact law (perfect_bonding only, or none)");
+    if (!st.interface_gaps.empty())
+      diag.error_at(st.control.where, what + "a path-following stage cannot also ramp "
+                                             "interface_gaps (the gap is not scaled by the load "
+                                             "factor); give them their own stage");
+    if (!st.obstacle_displacements.empty() || !st.rigid_body_conditions.empty())
+      diag.error_at(st.control.where,
+                    what + "a path-following stage cannot also move obstacles or rigid bodies "
+                           "(their motion is not scaled by the load factor); give them their "
+                           "own stage");
+    if (!stage_scales_something(spec.stages, i))
+      diag.error_at(st.control.where,
+                    what + "nothing to scale: the stage changes no boundary condition value and "
+                           "adds no load, so the load factor it follows has no meaning");
+  }
 }
 
 } // namespace bipot::input

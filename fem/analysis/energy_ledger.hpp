@@ -1,0 +1,57 @@
+#pragma once
+/// The energy balance of a run, step by step (`energy.csv`): the work of the external forces
+/// and of prescribed interface interferences against the energy stored in the bodies and the
+/// interfaces and what the interfaces dissipate. Every work term is the trapezoidal rule over
+/// the increment, exact for a linear bulk, for elastic interface springs at constant β, for
+/// friction at constant force and for unilateral contact; what is left (`balance_error`) is
+/// the trapezoidal rule's error on the adhesive springs while β changes within a step — the
+/// time-discretisation error of the energy, not a solver error (docs/theory.md).
+
+#include "contact/solver/interface_assembler.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace bipot {
+
+/// Cumulative energies since the start of the run (kJ; axisymmetric: full revolution).
+struct EnergyTotals {
+  double external_work = 0; ///< loads and support reactions on the bodies
+  /// Of prescribed interface motions: gaps (installation) and moving rigid obstacles.
+  double interference_work = 0;
+  double bulk_energy = 0;          ///< work of the internal forces (elastic energy, linear bulk)
+  double interface_energy = 0;     ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
+  double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost
+  double viscous_dissipation = 0;  ///< (β E − w)(β_old − β) A: adhesion's viscosity
+  double contact_work = 0;         ///< of the irreversible traction r: friction (and contact)
+  /// external + interference − (bulk + interface + adhesion + viscous + contact).
+  double balance_error() const;
+};
+
+class EnergyLedger {
+public:
+  explicit EnergyLedger(const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces);
+
+  /// After a converged increment, before the interfaces commit: u (all DOFs), the external
+  /// forces (loads + reactions) and the internal forces at u, all replicated.
+  void record(const std::vector<double>& u, const std::vector<double>& external,
+              const std::vector<double>& internal);
+  /// The displacements were reset to zero with the stresses kept (geostatic stage).
+  void reset_displacements();
+  const EnergyTotals& totals() const { return totals_; }
+
+private:
+  struct PairState {
+    contact::LocalVector jump, traction, r;
+    double beta = 0;
+  };
+  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces_;
+  EnergyTotals totals_;
+  std::vector<double> u_, external_, internal_;
+  std::vector<std::vector<PairState>> pairs_;   ///< per interface, per pair, at the last step
+  std::vector<double> shift_;                   ///< gap shift per interface at the last step
+  std::vector<std::array<double, 3>> obstacle_; ///< obstacle displacement at the last step
+};
+
+} // namespace bipot

@@ -1,0 +1,138 @@
+#include "fem/analysis/path_control.hpp"
+
+#include "fem/analysis/detail/static_analysis_impl.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace bipot {
+
+PathControl::PathControl(
+    const StageSpec& stage, const contact::InterfaceNewtonSystem* sys,
+    const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces)
+    : stage_(stage), sys_(sys), interfaces_(interfaces),
+      max_increments_(stage.control.max_increments > 0 ? stage.control.max_increments
+                                                       : 20 * stage.increments),
+      planned_(1.0 / stage.increments), step_(std::make_unique<PathStep>()) {
+  if (!stage.control.path_following()) return;
+  if (!sys_)
+    throw SolverError("stage '" + stage.name + "': control " + stage.control.type +
+                      " needs contact_solver.type: generalized_newton and a contact interface");
+  capacity_ = adhesion_capacity();
+  if (stage.control.type == "dissipation") {
+    if (!(capacity_ > 0))
+      throw SolverError("stage '" + stage.name +
+                        "': control dissipation follows the energy adhesion loss releases, and "
+                        "no interface has adhesion left to lose (no rccm interface with beta > "
+                        "0); use control: arc_length");
+    dissipation_step_ = stage.control.dissipation_step > 0 ? stage.control.dissipation_step
+                                                           : capacity_ / stage.increments;
+    dissipation_ = dissipation_step_;
+  }
+}
+
+PathControl::~PathControl() = default;
+
+double PathControl::adhesion_capacity() const {
+  double sum = 0;
+  for (const auto& ia : interfaces_) {
+    if (ia->tied()) continue;
+    const std::vector<double> beta = ia->committed_adhesion();
+    for (std::size_t i = 0; i < ia->num_pairs(); ++i)
+      sum += ia->interface().pairs[i].weight * ia->law().adhesion_energy(beta[i]);
+  }
+  return sum;
+}
+
+Eigen::VectorXd PathControl::on_interface(const std::vector<double>& u) const {
+  Eigen::VectorXd v(sys_->num_dofs());
+  for (Index k = 0; k < sys_->num_dofs(); ++k)
+    v(k) = u[sys_->dofs()[k]];
+  return v;
+}
+
+PathStep& PathControl::step(int level) {
+  PathStep& ps = *step_;
+  const double shrink = std::pow(0.5, level);
+  ps.x_prev = x_prev_;
+  ps.dlambda_prev = dlambda_prev_;
+  if (mode_ == Mode::ArcLength) {
+    ps.kind = PathStep::Kind::ArcLength;
+    ps.length = shrink * length_;
+    const double l_prev = x_prev_.norm();
+    ps.predictor_scale = l_prev > 0 ? ps.length / l_prev : 0.0;
+  } else {
+    ps.kind = PathStep::Kind::Dissipation;
+    ps.dissipation = shrink * dissipation_;
+    // Along the last increment, scaled to the energy asked for (within reason: the last
+    // increment may have been elastic, dissipating nothing: then as far as it went).
+    ps.predictor_scale =
+        dissipation_last_ > 0 ? std::clamp(ps.dissipation / dissipation_last_, 0.1, 1.0) : 1.0;
+  }
+  return ps;
+}
+
+bool PathControl::forward(const PathStep& step) const {
+  return step.kind != PathStep::Kind::ArcLength || step.x.dot(x_prev_) > 0;
+}
+
+bool PathControl::switch_on_failure() {
+  if (stage_.control.type != "dissipation" || mode_ != Mode::Ramp || finished_) return false;
+  if (!(capacity_ > 0) || x_prev_.size() == 0) return false;
+  mode_ = Mode::Dissipation;
+  return true;
+}
+
+void PathControl::end_increment(const std::vector<double>& u, const std::vector<double>& u_begin,
+                                double dlambda, int iterations) {
+  traced_last_ = mode_ != Mode::Ramp;
+  dissipation_last_ = 0;
+  if (!stage_.control.path_following()) return;
+  const Eigen::VectorXd x = on_interface(u) - on_interface(u_begin);
+  dissipation_last_ = sys_->released_adhesion_energy(nullptr); // before the commit
+  // The step that converged sets the next one's length: a traced step's own, or a shorter
+  // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
+  // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
+  // dissipation step never grows beyond the one asked for).
+  const double adapt = iterations <= 3 ? 1.5 : iterations >= 8 ? 0.6 : 1.0;
+  if (mode_ == Mode::ArcLength) {
+    length_ = std::min(4.0 * length0_, adapt * step_->length);
+  } else if (mode_ == Mode::Dissipation) {
+    dissipation_ = std::min(dissipation_step_, adapt * step_->dissipation);
+    // The load factor moved by a planned increment or more for that energy: the interfaces
+    // no longer soften fast, the ramp can take over again. So too once adhesion can no longer
+    // release a step's energy: friction alone would let the step run backwards (the pile
+    // pushed back in dissipates as well), and past the snap-back the ramp is stable again.
+    if (dlambda >= planned_ || adhesion_capacity() < dissipation_step_) mode_ = Mode::Ramp;
+  } else if (!finished_) {
+    if (stage_.control.type == "arc_length" && x.size() > 0) {
+      length0_ = stage_.control.arc_length > 0 ? stage_.control.arc_length : x.norm();
+      length_ = length0_;
+      mode_ = Mode::ArcLength;
+    } else if (stage_.control.type == "dissipation" && dissipation_last_ > dissipation_step_) {
+      // The ramp releases more than a traced step would: softening has set in.
+      mode_ = Mode::Dissipation;
+    }
+  }
+  x_prev_ = x;
+  dlambda_prev_ = dlambda;
+}
+
+std::string PathControl::failure_message(std::size_t stage_index, int step, double lambda,
+                                         int cutbacks, const std::vector<double>& history,
+                                         const std::string& why) const {
+  std::ostringstream msg;
+  msg << "stage '" << stage_.name << "' (" << stage_index + 1 << "), traced step " << step << " ("
+      << stage_.control.type << " control from load factor " << lambda << ", "
+      << (mode_ == Mode::ArcLength ? "arc length " : "dissipation ")
+      << (mode_ == Mode::ArcLength ? step_->length : step_->dissipation) << " after " << cutbacks
+      << " cut-backs): " << why;
+  if (!history.empty()) msg << "; last relative residual " << history.back();
+  msg << ". To get through: more increments in this stage (shorter first steps), "
+      << (mode_ == Mode::Dissipation ? "a smaller control.dissipation_step, "
+                                     : "a smaller control.arc_length, ")
+      << "or a larger max_cutbacks.";
+  return msg.str();
+}
+
+} // namespace bipot

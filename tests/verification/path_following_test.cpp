@@ -1,0 +1,134 @@
+// Path-following through a debonding snap-back (stage `control:` dissipation and arc_length),
+// on the column of tests/support/bonded_column.hpp. Every equilibrium lies on the curve
+// δ(g) = g + t(g)/k, parametrised by the opening g, which only grows. Past the limit point
+// (g*, δ*) δ(g) falls steeply down to δ_min at g = (3w²/(Ck))^¼, then rises again: the
+// snap-back a displacement ramp jumps over. Traced, every step must lie on that curve and the
+// unstable branch (λ falling) must be followed with no staggered fallback.
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/static_analysis.hpp"
+#include "fem/core/error.hpp"
+#include "fem/input/problem_reader.hpp"
+#include "tests/support/bonded_column.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bipot {
+namespace {
+
+using namespace test::column;
+
+const double g_min = std::pow(3.0 * w * w / (C * k), 0.25); // the lowest point of δ(g)
+
+double delta_of(double g) {
+  return g + t_of(g) / k;
+}
+
+// The column with a stage control; generalized_newton unless another solver is named.
+std::string input(const std::string& control, const std::string& solver = "generalized_newton") {
+  return test::column::input(solver, control);
+}
+
+class TracedSnapBack : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
+  const Model model = build_model(read_problem_text(input(GetParam()), "traced.yaml"));
+  StaticAnalysis analysis(model);
+  double previous_g = 0, largest_stress = 0, smallest_delta_after_peak = top;
+  int traced = 0, falling = 0;
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    const auto& ia = *analysis.interfaces()[0];
+    const double delta = top * r.load_factor;
+    const double g = ia.results()[0].jump(0);
+    const double stress = -ia.resultant()[1] / width; // the base pulls the column down
+    // On the curve: δ(g) and t(g) to 1e-8 of their scales (the solver converges to 1e-10;
+    // the issue asks for 1e-3).
+    EXPECT_NEAR(delta, delta_of(g), 1e-8 * top) << "step " << r.global_step;
+    EXPECT_NEAR(stress, t_of(g), 1e-8 * peak) << "step " << r.global_step;
+    EXPECT_GT(g, previous_g - 1e-12) << "the opening parametrises the path: it never closes";
+    EXPECT_EQ(r.staggered, 0) << "no staggered fallback on a traced path";
+    if (r.traced) {
+      ++traced;
+      // The target: at most 5 linear solves (Newton iterations) per traced increment.
+      EXPECT_LE(r.iterations, 5) << "step " << r.global_step;
+    }
+    if (r.traced && r.unstable) ++falling;
+    if (g > g_star) smallest_delta_after_peak = std::min(smallest_delta_after_peak, delta);
+    largest_stress = std::max(largest_stress, stress);
+    previous_g = g;
+  });
+  if (std::string(GetParam()) == "dissipation") {
+    // The ramp runs up to the limit point (a planned level here: δ* = 0.11 = 11/12 × 0.12)
+    // before dissipation control takes over: the peak within 1e-3.
+    EXPECT_NEAR(largest_stress, peak, 1e-3 * peak);
+  } else {
+    // Arc-length steps do not land on the limit point; they pass it: stresses on both sides.
+    EXPECT_GT(largest_stress, 0.5 * peak);
+  }
+  // The unstable branch was followed down towards its lowest point δ(g_min) = 0.0313 m.
+  EXPECT_GE(falling, 3);
+  EXPECT_LT(smallest_delta_after_peak, 0.3 * top);
+  EXPECT_GT(smallest_delta_after_peak, delta_of(g_min) - 1e-8);
+  EXPECT_EQ(summary.traced_increments, traced);
+  EXPECT_EQ(summary.staggered_increments, 0);
+  EXPECT_NEAR(previous_g + t_of(previous_g) / k, top, 1e-8 * top); // ends at λ = 1
+}
+
+INSTANTIATE_TEST_SUITE_P(BothControls, TracedSnapBack,
+                         ::testing::Values("dissipation", "arc_length"));
+
+// The energy balance along the traced column: exact to round-off while the bond is elastic;
+// while β falls within a step the trapezoidal rule on the softening springs leaves an error
+// that is second order in the step (the time-discretisation error of the energy, not a
+// solver error): 12 → 48 increments divides it by about 16 (measured 1.2e-2 → 7.2e-4 of the
+// external work at the end).
+TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
+  auto final_error = [](int increments) {
+    std::string text = input("dissipation");
+    text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
+    const Model model = build_model(read_problem_text(text, "traced.yaml"));
+    StaticAnalysis analysis(model);
+    EnergyTotals last;
+    analysis.run([&](const StepReport& r) {
+      if (r.energy.adhesion_dissipation == 0.0) {
+        EXPECT_LT(std::abs(r.energy.balance_error()), 1e-12 * r.energy.external_work);
+      }
+      last = r.energy;
+    });
+    // All the adhesion energy w A = 0.1 kJ goes but the little left in β = w/(C g²).
+    EXPECT_NEAR(last.adhesion_dissipation, w * width, 0.01 * w * width);
+    return std::abs(last.balance_error()) / last.external_work;
+  };
+  const double coarse = final_error(12), fine = final_error(48);
+  std::printf("energy balance error / external work: %.3g (12 increments), %.3g (48)\n", coarse,
+              fine);
+  EXPECT_LT(fine, 1e-3);
+  EXPECT_GT(coarse / fine, 10.0); // second order: 16 for a 4 times shorter step
+}
+
+void expect_input_error(const std::string& text, const std::string& fragment) {
+  try {
+    read_problem_text(text, "bad.yaml");
+    ADD_FAILURE() << "accepted; expected an error containing: " << fragment;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.yaml:"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PathFollowingInput, BadControlsAreLocated) {
+  expect_input_error(input("arc_lenght"), "unknown control type 'arc_lenght' (did you mean "
+                                          "'arc_length'?)");
+  expect_input_error(input("{type: arc_length, arc_length: -0.1}"), "value must be > 0");
+  expect_input_error(input("{type: dissipation, dissipation_step: 0}"), "value must be > 0 kJ");
+  expect_input_error(input("{type: ramp, arc_length: 1}"), "only for type: arc_length");
+  expect_input_error(input("dissipation", "semismooth_newton"),
+                     "needs contact_solver.type: generalized_newton");
+  std::string still = input("arc_length");
+  still.replace(still.find("value: 0.12"), 11, "value: 0");
+  expect_input_error(still, "nothing to scale");
+}
+
+} // namespace
+} // namespace bipot

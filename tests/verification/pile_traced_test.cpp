@@ -1,0 +1,90 @@
+// The shipped traced pull-out (inputs/pile_pullout/rccm_traced.yaml: RCCM at viscosity 0,
+// `control: dissipation`) against the same input ramped (`control: ramp`), which can only jump
+// over the snap-back with its staggered fallback. The traced run must
+//   - follow the snap-back: steps on which head force and head displacement both fall,
+//   - need no staggered fallback and at most a few Newton iterations per traced step,
+//   - pass through the ramp's equilibria wherever both runs have one (same head displacement).
+#include "apps/pile_pullout/pile_input.hpp"
+#include "apps/pile_pullout/pile_problem.hpp"
+#include "apps/pile_pullout/pile_results.hpp"
+
+#include "fem/analysis/model.hpp"
+#include "fem/analysis/static_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace bipot {
+namespace {
+
+struct Point {
+  double force = 0; // kN
+  bool traced = false, unstable = false;
+  int iterations = 0, staggered = 0;
+};
+
+// Pull-out steps by head displacement (rounded to 1e-9 mm, well below the step sizes).
+std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& control) {
+  spec.pullout.set("control", control);
+  const Model model = build_model(pile::make_problem(spec));
+  StaticAnalysis analysis(model);
+  std::map<long long, Point> out;
+  analysis.run([&](const StepReport& r) {
+    if (r.stage != "pullout") return;
+    const pile::HeadState head = pile::head_state(model, analysis);
+    out[std::llround(head.displacement * 1e12)] = {head.force, r.traced, r.unstable, r.iterations,
+                                                   r.staggered};
+  });
+  return out;
+}
+
+TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
+  const pile::PileSpec spec =
+      pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml");
+  const auto traced = pull_out(spec, "dissipation");
+  const auto ramped = pull_out(spec, "ramp");
+
+  int falling = 0, traced_steps = 0, iterations = 0, most = 0;
+  double peak = 0, peak_at = 0, lowest_after_peak = 1e9;
+  for (const auto& [key, p] : traced) {
+    EXPECT_EQ(p.staggered, 0) << "no staggered fallback on the traced path";
+    if (p.force > peak) peak = p.force, peak_at = key * 1e-12;
+    if (!p.traced) continue;
+    ++traced_steps;
+    iterations += p.iterations;
+    most = std::max(most, p.iterations);
+    if (p.unstable) ++falling;
+  }
+  // The branch after the peak: the lowest force at a head displacement below the peak's.
+  for (const auto& [key, p] : traced)
+    if (key * 1e-12 < peak_at && p.unstable)
+      lowest_after_peak = std::min(lowest_after_peak, p.force);
+  std::printf("traced: %d steps, %.2f Newton iterations per traced step (most %d), peak %.2f kN "
+              "at %.3f mm, %d steps on the falling branch, lowest %.2f kN\n",
+              traced_steps, double(iterations) / traced_steps, most, peak, 1e3 * peak_at, falling,
+              lowest_after_peak);
+  EXPECT_GE(falling, 3);                     // the falling branch is followed, step by step
+  EXPECT_LT(lowest_after_peak, 0.85 * peak); // and far down (336 of 446 kN when written)
+  EXPECT_LE(double(iterations) / traced_steps, 5.0);
+
+  // The ramp jumps over the snap-back; both runs share the equilibria before it, and after it
+  // wherever they meet the same head displacement. Before: the same path, so to round-off.
+  // After: the paths differ (jump vs traced), and the frictional history with them: 1e-5
+  // (3.5e-6 measured at the first point after the snap-back, below 5e-7 elsewhere).
+  int common = 0;
+  for (const auto& [key, r] : ramped) {
+    const auto it = traced.find(key);
+    if (it == traced.end()) continue;
+    ++common;
+    const double tolerance = key * 1e-12 < peak_at ? 1e-6 : 1e-5;
+    EXPECT_NEAR(it->second.force, r.force, tolerance * std::abs(r.force))
+        << "head displacement " << key * 1e-9 << " mm";
+  }
+  EXPECT_GE(common, 20);
+}
+
+} // namespace
+} // namespace bipot
