@@ -13,8 +13,11 @@
 
 Usage: bench/pile.py [--app build/apps/pile_pullout/pile_pullout] [--repeat 3]
                      [--factors 1,2,4,8] [--study-increments 40] [--skip-default]
+                     [--input inputs/pile_pullout/rccm_mohr_coulomb.yaml]
                      [--linear-solver "{method: gmres, preconditioner: muelu}"]
 --linear-solver replaces the input's `linear_solver:` value (a YAML flow map) in every run.
+--input takes another input than rccm.yaml (e.g. the pile in Mohr-Coulomb soil); --factors ""
+skips the refinement study.
 Prints a Markdown table for docs/performance.md.
 """
 import argparse
@@ -82,14 +85,16 @@ def main():
     p.add_argument("--factors", default="1,2,4,8")
     p.add_argument("--study-increments", type=int, default=40)
     p.add_argument("--skip-default", action="store_true")
+    p.add_argument("--input", default=DEFAULT)
     p.add_argument("--linear-solver", default=None,
                    help="YAML flow map replacing the input's linear_solver value")
     a = p.parse_args()
     a.app = os.path.abspath(a.app)  # the runs happen in a scratch folder
     work = tempfile.mkdtemp(prefix="bipot_bench_pile_")
-    text = with_linear_solver(open(DEFAULT).read(), a.linear_solver)
+    text = with_linear_solver(open(a.input).read(), a.linear_solver)
+    label = os.path.basename(a.input)
     if not a.skip_default:
-        default = os.path.join(work, "rccm.yaml")
+        default = os.path.join(work, label)
         with open(default, "w") as f:
             f.write(text)
         runs = [run(a.app, default, work) for _ in range(a.repeat)]
@@ -97,16 +102,19 @@ def main():
         print("| default RCCM run | DOFs | increments | linear solves | set-ups | wall time "
               "(median) | assembly | set-up | solve | peak memory |")
         print("|---|---|---|---|---|---|---|---|---|---|")
-        print(f"| rccm.yaml | {med['dofs']} | {med['increments']:.0f} | {med['solves']:.0f} | "
+        print(f"| {label} | {med['dofs']} | {med['increments']:.0f} | {med['solves']:.0f} | "
               f"{med['setups']:.0f} | {med['seconds']:.1f} s | {med['assembly']:.1f} s | "
               f"{med['setup']:.1f} s | {med['solve']:.1f} s | {med['memory']:.0f} MB |")
         times = ", ".join("%.1f" % r["seconds"] for r in runs)
         print(f"(times of the {a.repeat} runs: {times} s)\n", flush=True)
     rows = []
+    factors = [int(x) for x in a.factors.split(",") if x]
+    if not factors:
+        return
     print("| k | DOFs | increments | linear solves | Krylov iterations | wall time | assembly | "
           "set-up | solve | memory | peak force | exponent vs previous |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|", flush=True)
-    for k in [int(x) for x in a.factors.split(",")]:
+    for k in factors:
         path = os.path.join(work, f"pile_k{k}.yaml")
         with open(path, "w") as f:
             f.write(scaled(text, k, a.study_increments))

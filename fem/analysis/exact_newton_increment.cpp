@@ -91,6 +91,10 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       if (reference == 0.0) return true; // nothing acts on the bodies
     }
     const double floor = std::max(copt.tolerance * reference, roundoff_factor * roundoff);
+    // A nonlinear bulk: the history is that of the whole residual at each bulk state (Newton
+    // on the bulk, quadratic with the consistent tangent); the inner iterations solve a
+    // linearised problem exactly and their residuals say nothing about the increment.
+    if (!linear) log.history.push_back(full_norm / reference);
     if (outer > 0) {
       if (full_norm <= floor) return true;
       if (outer >= copt.max_iterations) {
@@ -167,7 +171,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       const double force = F.head(nI).norm(), change = sys.multiplier_residual(F);
       const bool constraint_met = !path || std::abs(F(n)) <= copt.tolerance * path->scale();
       summary.assembly_seconds += seconds_since(t0);
-      log.history.push_back(force / reference);
+      if (linear) log.history.push_back(force / reference);
       log.contact = change / reference;
       if (force <= floor && change <= copt.tolerance * reference && constraint_met) break;
       if (!std::isfinite(force) || !std::isfinite(change)) {

@@ -116,7 +116,15 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     }
     if (need_matrix) {
       t0 = std::chrono::steady_clock::now();
-      solver.setup(*K);
+      // A failed factorisation (the direct solvers broadcast it: every rank throws) is a
+      // failed increment, cut back like the others: a plastic tangent can be singular where
+      // points sit at a yield surface's apex, which a smaller step may avoid.
+      try {
+        solver.setup(*K);
+      } catch (const SolverError& e) {
+        log.failure = e.what();
+        return false;
+      }
       summary.setup_seconds += seconds_since(t0);
       matrix_ready = true;
       for (const auto& ia : interfaces)

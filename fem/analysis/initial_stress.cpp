@@ -1,6 +1,11 @@
 #include "fem/analysis/initial_stress.hpp"
 
+#include "fem/core/error.hpp"
+#include "materials/elasto_plastic.hpp"
+
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 
 namespace bipot {
 
@@ -36,6 +41,52 @@ initial_stress_function(const Model& model) {
       sigma(i) = (i == vertical) ? sv : sh;
     return sigma;
   };
+}
+
+void check_initial_stress_admissible(const Model& model) {
+  if (model.spec.initial_stress.empty()) return;
+  const auto sigma0 = initial_stress_function(model);
+  std::vector<std::string> problems;
+  for (const auto& entry : model.spec.initial_stress) {
+    const int region = model.mesh.regions.at(entry.region);
+    // Only the plastic materials have a yield surface; the elastic ones accept any stress.
+    const auto* plastic = region < static_cast<int>(model.material_of_region.size())
+                              ? dynamic_cast<const ElastoPlastic*>(model.material_of_region[region])
+                              : nullptr;
+    if (!plastic) continue;
+    std::vector<bool> seen(model.mesh.num_nodes(), false);
+    double worst = -INFINITY;
+    Index worst_node = -1;
+    for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+      if (model.mesh.cell_regions[c] != region) continue;
+      for (int a = 0; a < model.mesh.cell_num_nodes(c); ++a) {
+        const Index n = model.mesh.cell(c)[a];
+        if (seen[n]) continue;
+        seen[n] = true;
+        const double f =
+            plastic->yield_function(stress_tensor(sigma0(model.mesh.nodes[n], region)), 0.0);
+        if (f > worst) worst = f, worst_node = n;
+      }
+    }
+    if (worst_node < 0) continue;
+    const Voigt s = sigma0(model.mesh.nodes[worst_node], region);
+    // Round-off of the stress components (geostatic: zero at the surface, where a
+    // cohesionless material is exactly on its apex).
+    if (!(worst > 1e-9 * std::max(1.0, s.norm()))) continue;
+    std::ostringstream msg;
+    msg << entry.where << ": the initial stress of region '" << entry.region
+        << "' lies outside the yield surface of its material '" << plastic->name() << "': at node "
+        << worst_node << " (";
+    const int dim = model.mesh.dim;
+    for (int i = 0; i < dim; ++i)
+      msg << (i ? ", " : "") << model.mesh.nodes[worst_node][i];
+    msg << ") the yield function is " << worst << " kPa > 0, stress [";
+    for (int i = 0; i < s.size(); ++i)
+      msg << (i ? ", " : "") << s(i);
+    msg << "] kPa. Lower the stress (K0 nearer 1, a smaller unit weight) or raise the strength";
+    problems.push_back(msg.str());
+  }
+  if (!problems.empty()) throw InputError(problems);
 }
 
 } // namespace bipot

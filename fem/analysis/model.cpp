@@ -1,5 +1,7 @@
 #include "fem/analysis/model.hpp"
 
+#include "fem/analysis/initial_stress.hpp"
+
 #include "fem/core/error.hpp"
 
 #include "contact/laws/interface_law_registry.hpp"
@@ -273,6 +275,7 @@ Model build_model(const ProblemSpec& spec) {
   if (!problems.empty()) throw InputError(problems);
   split_interfaces(model);
   restrict_sets_to_regions(spec.mesh, model.mesh);
+  check_initial_stress_admissible(model);
   add_rigid_bodies(model); // last: its reference nodes end the mesh
   return model;
 }

@@ -178,8 +178,18 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   const int nv = voigt_size(dim);
   Field displacement{"displacement", dim, analysis.displacement()};
   Field owner{"rank", 1, std::vector<double>(cells.size(), rank_)};
-  vtk_->write_step(report.time, model_.mesh, cells, {displacement},
-                   {Field{"strain", nv, strain}, Field{"stress", nv, stress}, owner});
+  std::vector<Field> cell_fields = {Field{"strain", nv, strain}, Field{"stress", nv, stress},
+                                    owner};
+  // The materials' own fields (equivalent plastic strain, yield indicator, ...), cell averages.
+  const std::vector<std::string> names = analysis.output_field_names();
+  const std::vector<double> values = analysis.cell_output_fields();
+  for (std::size_t f = 0; f < names.size(); ++f) {
+    Field field{names[f], 1, std::vector<double>(cells.size())};
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      field.values[k] = values[k * names.size() + f];
+    cell_fields.push_back(std::move(field));
+  }
+  vtk_->write_step(report.time, model_.mesh, cells, {displacement}, cell_fields);
   barrier();
 }
 

@@ -393,4 +393,12 @@ void StaticAnalysis::cell_results(std::vector<Index>& cells, std::vector<double>
   impl_->solid.cell_averages(strain, stress);
 }
 
+std::vector<std::string> StaticAnalysis::output_field_names() const {
+  return impl_->solid.output_field_names();
+}
+
+std::vector<double> StaticAnalysis::cell_output_fields() const {
+  return impl_->solid.cell_output_fields();
+}
+
 } // namespace bipot

@@ -143,6 +143,10 @@ public:
   /// Committed cell averages of strain and stress for the cells this rank owns.
   void cell_results(std::vector<Index>& cells, std::vector<double>& strain,
                     std::vector<double>& stress) const;
+  /// Names of the materials' output fields and their committed cell averages for the cells
+  /// of cell_results(), fields interleaved (SolidAssembler::cell_output_fields).
+  std::vector<std::string> output_field_names() const;
+  std::vector<double> cell_output_fields() const;
 
 private:
   struct Impl;

@@ -8,6 +8,8 @@
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
 
+#include <algorithm>
+
 namespace bipot {
 
 SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& dofs,
@@ -23,6 +25,19 @@ SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& d
       throw InputError("no material for region '" + mesh_.region_name(region) + "' (cell " +
                        std::to_string(c) + ")");
     qp_offset_.push_back(qp_offset_.back() + values_for(mesh_.cell_types[c]).num_points());
+  }
+  Index num_state = 0;
+  std::vector<Index> offsets = {0};
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index c = owned_cells_[k];
+    num_state += (qp_offset_[k + 1] - qp_offset_[k]) *
+                 materials_[mesh_.cell_regions[c]]->num_state_variables();
+    offsets.push_back(num_state);
+  }
+  if (num_state > 0) {
+    state_offset_ = std::move(offsets);
+    state_.assign(num_state, 0.0);
+    trial_state_ = state_;
   }
   const std::size_t n = owned_cells_.size() * nv_;
   cell_strain_.assign(n, 0.0);
@@ -61,14 +76,16 @@ void SolidAssembler::set_initial_stress(
 
 // Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and
 // K_e = tangent (row-major), both sized num_dofs. Also records the trial cell averages and,
-// if `point_stress` is given, calls it with (point index, material stress) at every point.
+// if `point_stress` is given, calls it with (point index, strain of `u`, material stress,
+// whether the material has internal variables) at every point.
 template <class CellKernel>
-void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
-                          const std::function<void(Index, const Voigt&)>& point_stress) {
+void SolidAssembler::loop(
+    const std::vector<double>& u, CellKernel&& kernel,
+    const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress) {
   std::vector<Index> cell_dofs;
   std::vector<double> u_e, f_e, K_e;
   Eigen::MatrixXd B, DB;
-  Voigt eps, sig, sig0;
+  Voigt eps, eps_material, sig, sig0;
   VoigtMatrix D;
   for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
     const Index c = owned_cells_[k];
@@ -84,6 +101,9 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
     K_e.assign(static_cast<std::size_t>(nd) * nd, 0.0);
     B.resize(nv_, nd);
     const Material& mat = *materials_[mesh_.cell_regions[c]];
+    const int ns = mat.num_state_variables();
+    const double* old_state = ns > 0 ? &state_[state_offset_[k]] : nullptr;
+    double* new_state = ns > 0 ? &trial_state_[state_offset_[k]] : nullptr;
     Eigen::Map<Eigen::VectorXd> f(f_e.data(), nd);
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
         K_e.data(), nd, nd);
@@ -100,8 +120,12 @@ void SolidAssembler::loop(const std::vector<double>& u, CellKernel&& kernel,
         sig0.setZero(nv_);
       else
         sig0 = Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
-      mat.update(eps, sig0, nullptr, sig, D, nullptr);
-      if (point_stress) point_stress(p, sig);
+      eps_material = eps;
+      if (ns > 0 && !strain_offset_.empty())
+        eps_material += Eigen::Map<const Eigen::VectorXd>(&strain_offset_[p * nv_], nv_);
+      mat.update(eps_material, sig0, old_state ? old_state + q * ns : nullptr, sig, D,
+                 new_state ? new_state + q * ns : nullptr);
+      if (point_stress) point_stress(p, eps, sig, ns > 0);
       const Voigt total = sig + sig0;
       for (int i = 0; i < nv_; ++i) {
         avg_strain[i] += share * eps(i);
@@ -145,22 +169,65 @@ void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVec
 void SolidAssembler::commit() {
   cell_strain_ = trial_cell_strain_;
   cell_stress_ = trial_cell_stress_;
+  state_ = trial_state_;
 }
 
 void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
-  if (sigma0_.empty()) sigma0_.assign(static_cast<std::size_t>(qp_offset_.back()) * nv_, 0.0);
-  std::vector<double> added(sigma0_.size(), 0.0);
+  const std::size_t n = static_cast<std::size_t>(qp_offset_.back()) * nv_;
+  if (sigma0_.empty()) sigma0_.assign(n, 0.0);
+  if (!state_.empty() && strain_offset_.empty()) strain_offset_.assign(n, 0.0);
+  std::vector<double> added(n, 0.0), strain(state_.empty() ? 0 : n, 0.0);
+  std::vector<bool> history(qp_offset_.back(), false);
   loop(
       u, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
-      [&](Index p, const Voigt& sig) {
+      [&](Index p, const Voigt& eps, const Voigt& sig, bool has_state) {
+        history[p] = has_state;
         for (int i = 0; i < nv_; ++i)
-          added[p * nv_ + i] = sig(i);
+          (has_state ? strain : added)[p * nv_ + i] = has_state ? eps(i) : sig(i);
       });
-  for (std::size_t i = 0; i < sigma0_.size(); ++i)
-    sigma0_[i] += added[i];
+  // Added after the loop, which reads both.
+  for (std::size_t p = 0; p < history.size(); ++p)
+    for (int i = 0; i < nv_; ++i) {
+      if (history[p])
+        strain_offset_[p * nv_ + i] += strain[p * nv_ + i];
+      else
+        sigma0_[p * nv_ + i] += added[p * nv_ + i];
+    }
   // Stresses are unchanged and the strains restart from zero.
   std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
   trial_cell_strain_ = cell_strain_;
+}
+
+std::vector<std::string> SolidAssembler::output_field_names() const {
+  std::vector<std::string> names;
+  for (const Material* m : materials_)
+    for (int i = 0; m && i < m->num_output_fields(); ++i)
+      if (std::find(names.begin(), names.end(), m->output_field_name(i)) == names.end())
+        names.push_back(m->output_field_name(i));
+  return names;
+}
+
+std::vector<double> SolidAssembler::cell_output_fields() const {
+  const std::vector<std::string> names = output_field_names();
+  const std::size_t nf = names.size();
+  std::vector<double> out(owned_cells_.size() * nf, 0.0), point;
+  if (nf == 0 || state_.empty()) return out;
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Material& mat = *materials_[mesh_.cell_regions[owned_cells_[k]]];
+    const int ns = mat.num_state_variables(), no = mat.num_output_fields();
+    if (ns == 0 || no == 0) continue;
+    std::vector<std::size_t> column(no);
+    for (int i = 0; i < no; ++i)
+      column[i] = std::find(names.begin(), names.end(), mat.output_field_name(i)) - names.begin();
+    const Index points = qp_offset_[k + 1] - qp_offset_[k];
+    point.resize(no);
+    for (Index q = 0; q < points; ++q) {
+      mat.output(&state_[state_offset_[k] + q * ns], point.data());
+      for (int i = 0; i < no; ++i)
+        out[k * nf + column[i]] += point[i] / points;
+    }
+  }
+  return out;
 }
 
 void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {

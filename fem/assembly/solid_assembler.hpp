@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bipot {
@@ -40,11 +41,17 @@ public:
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
-  /// Accepts the last trial state (end of a converged increment).
+  /// Accepts the last trial state (end of a converged increment): cell averages and the
+  /// materials' internal variables. Until then every assembly starts again from the
+  /// committed internal variables, so a failed (cut-back) increment leaves no trace.
   void commit();
 
-  /// Displacement reset that keeps stresses (geostatic stage): the stress of `u` at every
-  /// quadrature point is added to the initial stress, and the caller then zeroes `u`.
+  /// Displacement reset that keeps stresses (geostatic stage); the caller then zeroes `u`.
+  /// Materials without internal variables: the stress of `u` at every quadrature point is
+  /// added to the initial stress. Materials with internal variables keep their whole history
+  /// instead: the strain of `u` becomes a per-point offset added to the strain they are
+  /// given, so their plastic strain, hardening and stress carry over unchanged while the
+  /// displacements and the output strains restart from zero (docs/theory.md).
   void absorb_stress_into_initial(const std::vector<double>& u);
 
   /// The committed state of the owned cells for a checkpoint (solid_state.cpp): "cells" (global
@@ -68,6 +75,16 @@ public:
   /// cells, Voigt components interleaved.
   void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
   int voigt_size() const { return nv_; }
+  /// Names of the materials' output fields (plastic strain, yield indicator, ...): the union
+  /// over every material of the model, in region order, so that all ranks agree.
+  std::vector<std::string> output_field_names() const;
+  /// Committed cell averages of the output fields, one value per owned cell and field
+  /// (fields interleaved, in the order of output_field_names()); 0 in cells whose material
+  /// does not have the field.
+  std::vector<double> cell_output_fields() const;
+  /// Committed internal variables of every quadrature point of the owned cells, in cell then
+  /// point order, num_state_variables() of its material each; empty if no material has any.
+  const std::vector<double>& committed_state() const { return state_; }
 
 private:
   /// An array of the state for save_state()/load_state(): owned cell k holds
@@ -83,7 +100,7 @@ private:
   ElementValues& values_for(CellType type);
   template <class CellKernel>
   void loop(const std::vector<double>& u, CellKernel&& kernel,
-            const std::function<void(Index, const Voigt&)>& point_stress = {});
+            const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress = {});
 
   const Mesh& mesh_;
   Kinematics kin_;
@@ -100,6 +117,13 @@ private:
   std::vector<double> sigma0_;   ///< initial stress per point (nv each); empty = zero
   std::vector<double> cell_strain_, cell_stress_;             ///< committed averages
   std::vector<double> trial_cell_strain_, trial_cell_stress_; ///< of the last assembly
+  // Internal variables, only for materials that have some (a linear model stores nothing):
+  // state_offset_[k] is the first value of owned cell k, its points following each other.
+  std::vector<Index> state_offset_;
+  std::vector<double> state_, trial_state_; ///< committed; of the last assembly
+  /// Per point (nv each), points of materials with internal variables only: the strain at
+  /// the last displacement reset, added to what those materials see. Empty until a reset.
+  std::vector<double> strain_offset_;
 };
 
 } // namespace bipot
