@@ -53,7 +53,7 @@ private:
   std::vector<std::pair<std::size_t, int>> reaction_columns_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
   std::unique_ptr<CsvWriter> reactions_;
-  std::unique_ptr<CsvWriter> energy_; ///< energy.csv (rank 0)
+  std::unique_ptr<CsvWriter> energy_;       ///< energy.csv (rank 0)
   std::unique_ptr<CsvWriter> rigid_bodies_; ///< rigid_bodies.csv, when the model has any
   // Per interface (rank 0): its line/surface mesh (nodes = pairs), VTK series and CSV.
   std::vector<Mesh> interface_meshes_;

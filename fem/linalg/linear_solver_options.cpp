@@ -69,8 +69,8 @@ ParamSchema LinearSolver::schema() {
           "preconditioner, on which CG breaks down (and `direct` takes no preconditioner)",
           [](const ParameterSet& p) -> std::optional<std::string> {
             if (p.string("preconditioner") != "lu" || p.string("method") == "gmres") return {};
-            return "preconditioner 'lu' needs method 'gmres', got method '" +
-                   p.string("method") + "': old LU factors are a nonsymmetric preconditioner";
+            return "preconditioner 'lu' needs method 'gmres', got method '" + p.string("method") +
+                   "': old LU factors are a nonsymmetric preconditioner";
           }});
   return s;
 }

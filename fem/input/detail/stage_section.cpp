@@ -154,12 +154,12 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries = list_entries(
-      top, "stages",
-      {"name", "increments", "duration", "reset_displacements", "boundary_conditions", "loads",
-       "interface_gaps", "interfaces", "obstacle_displacements", "rigid_bodies", "control",
-       "output_at"},
-      expected);
+  const auto entries =
+      list_entries(top, "stages",
+                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
+                    "loads", "interface_gaps", "interfaces", "obstacle_displacements",
+                    "rigid_bodies", "control", "output_at"},
+                   expected);
   std::vector<InterfaceLawChangeSpec> active;
   for (const InterfaceSpec& f : interfaces)
     active.push_back({f.name, f.law, f.parameters, f.where});
