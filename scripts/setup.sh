@@ -50,5 +50,6 @@ cmake_args=(-DCMAKE_BUILD_TYPE="$build_type" -DBIPOT_WERROR="${BIPOT_WERROR:-OFF
 cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" > "$build_dir/configure.log" 2>&1 \
   || { cat "$build_dir/configure.log" >&2; exit 1; }
 echo "setup: building in $build_dir with $jobs jobs"
-read -r -a targets <<< "${BUILD_TARGETS:-}"
+# Every line of BUILD_TARGETS (test.sh lists them over several): `read` alone takes the first.
+read -r -d '' -a targets <<< "${BUILD_TARGETS:-}" || true
 cmake --build "$build_dir" -j "$jobs" ${targets[@]:+--target "${targets[@]}"}
