@@ -1,6 +1,7 @@
 #include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
 
+#include "contact/solver/interface_newton_system.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/condition_checks.hpp"
 #include "fem/input/increment_checks.hpp"
@@ -75,6 +76,17 @@ Model checked_model(const ProblemSpec& spec) {
       reference_nodes.push_back({b.name, b.nodes.empty() ? Index(-1) : b.nodes.front(), b.point});
     const auto free = free_rigid_body_modes(model.spec, model.mesh, opening, held, reference_nodes);
     problems.insert(problems.end(), free.begin(), free.end());
+  }
+  // generalized_newton's dense condensed system: refused here when too large, rather than
+  // once `run` has built the analysis.
+  if (model.contact_solver.exact_newton()) {
+    std::vector<const contact::Interface*> condensed;
+    for (const auto& iface : model.interfaces)
+      if (!contact::shares_nodes(iface)) condensed.push_back(&iface);
+    const std::string too_large = contact::condensed_size_problem(
+        contact::condensed_size(condensed, spatial_dim(model.kinematics)),
+        model.spec.contact_solver.where);
+    if (!too_large.empty()) problems.push_back(too_large);
   }
   if (!problems.empty()) throw InputError(problems);
   return model;

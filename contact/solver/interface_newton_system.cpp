@@ -4,6 +4,29 @@
 
 namespace bipot::contact {
 
+CondensedSize condensed_size(const std::vector<const Interface*>& interfaces, int dim) {
+  std::vector<Index> nodes;
+  CondensedSize size;
+  for (const Interface* iface : interfaces)
+    for (const InterfacePair& p : iface->pairs) {
+      nodes.push_back(p.node_a);
+      if (p.node_b != rigid_obstacle) nodes.push_back(p.node_b);
+      size.multipliers += dim;
+    }
+  std::sort(nodes.begin(), nodes.end());
+  size.dofs = dim * static_cast<Index>(std::unique(nodes.begin(), nodes.end()) - nodes.begin());
+  return size;
+}
+
+std::string condensed_size_problem(const CondensedSize& size, const std::string& where) {
+  if (size.total() <= max_condensed_unknowns) return "";
+  return (where.empty() ? std::string() : where + ": ") +
+         "generalized_newton condenses the model onto its " + std::to_string(size.dofs) +
+         " interface DOFs and " + std::to_string(size.multipliers) +
+         " multipliers, a dense system of more than " + std::to_string(max_condensed_unknowns) +
+         " unknowns; use type: semismooth_newton for interfaces this large";
+}
+
 InterfaceNewtonSystem::InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces,
                                              const DofMap& dofs)
     : dim_(dofs.dofs_per_node()) {

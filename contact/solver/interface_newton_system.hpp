@@ -24,9 +24,26 @@
 
 #include <Eigen/Dense>
 
+#include <string>
 #include <vector>
 
 namespace bipot::contact {
+
+/// The size of the dense condensed system generalized_newton builds, without building it:
+/// dim × (distinct nodes of the pairs, obstacles having none) DOFs and dim × pairs
+/// multipliers, over the interfaces given (those that do not share their nodes).
+struct CondensedSize {
+  Index dofs = 0, multipliers = 0;
+  Index total() const { return dofs + multipliers; }
+};
+CondensedSize condensed_size(const std::vector<const Interface*>& interfaces, int dim);
+
+/// The largest condensed system generalized_newton accepts: its LU costs (2/3) n³ per
+/// factorisation and S and J hold 2 n² doubles (2.3 GB at 12,000); past it semismooth_newton
+/// (sparse, the whole mesh) is the better tool.
+constexpr Index max_condensed_unknowns = 12000;
+/// The message refusing a larger one ("" when it fits), prefixed by `where`.
+std::string condensed_size_problem(const CondensedSize& size, const std::string& where);
 
 class InterfaceNewtonSystem {
 public:

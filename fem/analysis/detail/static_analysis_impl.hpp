@@ -214,19 +214,12 @@ struct StaticAnalysis::Impl {
       for (const auto& ia : interfaces)
         all.push_back(ia.get());
       newton_system = std::make_unique<contact::InterfaceNewtonSystem>(all, dofs);
-      // The condensed system is dense: its LU costs (2/3) n³ per iteration and it holds 2 n²
-      // doubles (S and J). Past this size semismooth_newton (sparse, the whole mesh) is the
-      // better tool; say so rather than run out of memory or time.
-      constexpr Index max_dense = 12000; // 2.3 GB for S and J
-      if (newton_system->size() > max_dense)
-        throw InputError(
-            {(model.spec.contact_solver.where.empty() ? std::string()
-                                                      : model.spec.contact_solver.where + ": ") +
-             "contact_solver.type: generalized_newton condenses the model onto its " +
-             std::to_string(newton_system->num_dofs()) + " interface DOFs and " +
-             std::to_string(newton_system->num_multipliers()) +
-             " multipliers, a dense system of more than " + std::to_string(max_dense) +
-             " unknowns; use type: semismooth_newton for interfaces this large"});
+      // Refused at `check` already (apps/common/checked_model.cpp); a model built otherwise
+      // gets the same message here.
+      const std::string too_large = contact::condensed_size_problem(
+          {newton_system->num_dofs(), newton_system->num_multipliers()},
+          model.spec.contact_solver.where);
+      if (!too_large.empty()) throw InputError({too_large});
     }
   }
 
