@@ -51,6 +51,9 @@ public:
   /// Yield function at total stress `stress` and hardening variable `kappa`: ≤ 0 admissible,
   /// in kPa (the most critical of the material's surfaces).
   virtual double yield_function(const Mat3& stress, double kappa) const = 0;
+  std::optional<double> initial_yield_value(const Voigt& stress) const override {
+    return yield_function(stress_tensor(stress), 0.0);
+  }
 
   /// The elasticity matrix for Voigt size 4 or 6 (engineering shear strains).
   VoigtMatrix elasticity_matrix(int voigt_size) const;

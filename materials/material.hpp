@@ -4,6 +4,7 @@
 
 #include "fem/core/types.hpp"
 
+#include <optional>
 #include <string>
 
 namespace bipot {
@@ -41,6 +42,13 @@ public:
   /// True if the tangent does not depend on the strain or state: the analysis then keeps
   /// one matrix (and preconditioner) for as long as the constrained DOFs do not change.
   virtual bool is_linear() const { return false; }
+
+  /// The yield function at total stress `stress` of a virgin point (≤ 0 admissible, kPa), or
+  /// nothing for a material without a yield surface: the check that initial (geostatic)
+  /// stresses are admissible needs no more than this.
+  virtual std::optional<double> initial_yield_value(const Voigt& /*stress*/) const {
+    return std::nullopt;
+  }
 
   /// Weight per unit volume (kN/m³) used by gravity loads; 0 if not given.
   virtual double unit_weight() const { return 0.0; }

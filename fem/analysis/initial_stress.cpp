@@ -1,10 +1,10 @@
 #include "fem/analysis/initial_stress.hpp"
 
 #include "fem/core/error.hpp"
-#include "materials/elasto_plastic.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace bipot {
@@ -50,22 +50,27 @@ void check_initial_stress_admissible(const Model& model) {
   for (const auto& entry : model.spec.initial_stress) {
     const int region = model.mesh.regions.at(entry.region);
     // Only the plastic materials have a yield surface; the elastic ones accept any stress.
-    const auto* plastic = region < static_cast<int>(model.material_of_region.size())
-                              ? dynamic_cast<const ElastoPlastic*>(model.material_of_region[region])
-                              : nullptr;
-    if (!plastic) continue;
+    const Material* material = region < static_cast<int>(model.material_of_region.size())
+                                   ? model.material_of_region[region]
+                                   : nullptr;
+    if (!material) continue;
     std::vector<bool> seen(model.mesh.num_nodes(), false);
     double worst = -INFINITY;
     Index worst_node = -1;
-    for (Index c = 0; c < model.mesh.num_cells(); ++c) {
+    bool has_yield_surface = true;
+    for (Index c = 0; c < model.mesh.num_cells() && has_yield_surface; ++c) {
       if (model.mesh.cell_regions[c] != region) continue;
       for (int a = 0; a < model.mesh.cell_num_nodes(c); ++a) {
         const Index n = model.mesh.cell(c)[a];
         if (seen[n]) continue;
         seen[n] = true;
-        const double f =
-            plastic->yield_function(stress_tensor(sigma0(model.mesh.nodes[n], region)), 0.0);
-        if (f > worst) worst = f, worst_node = n;
+        const std::optional<double> f =
+            material->initial_yield_value(sigma0(model.mesh.nodes[n], region));
+        if (!f) { // no yield surface: any stress is admissible
+          has_yield_surface = false;
+          break;
+        }
+        if (*f > worst) worst = *f, worst_node = n;
       }
     }
     if (worst_node < 0) continue;
@@ -75,7 +80,7 @@ void check_initial_stress_admissible(const Model& model) {
     if (!(worst > 1e-9 * std::max(1.0, s.norm()))) continue;
     std::ostringstream msg;
     msg << entry.where << ": the initial stress of region '" << entry.region
-        << "' lies outside the yield surface of its material '" << plastic->name() << "': at node "
+        << "' lies outside the yield surface of its material '" << material->name() << "': at node "
         << worst_node << " (";
     const int dim = model.mesh.dim;
     for (int i = 0; i < dim; ++i)
