@@ -2,6 +2,8 @@
 
 #include <unsupported/Eigen/IterativeSolvers>
 
+#include <algorithm>
+
 namespace bipot {
 
 namespace {
@@ -37,28 +39,41 @@ Eigen::VectorXd ReusedLuSolver::factorize_and_solve(const Eigen::MatrixXd& J,
   return lu_.solve(b);
 }
 
-Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b) {
+Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b,
+                                      double accept) {
+  accept = std::max(accept, accept_);
   const double b_norm = b.norm();
   if (b_norm == 0.0) return Eigen::VectorXd::Zero(b.size());
   if (!factorized_ || lu_.rows() != J.rows()) return factorize_and_solve(J, b);
   Eigen::GMRES<Eigen::MatrixXd, EarlierFactors> gmres;
   gmres.set_restart(max_iterations_);
-  gmres.setMaxIterations(max_iterations_);
-  gmres.setTolerance(tolerance_);
   gmres.compute(J);
   gmres.preconditioner().lu = &lu_;
   // Eigen's GMRES stops on the preconditioned residual; the true one (one product to check)
   // is larger by up to the conditioning of the earlier factors: 1e-12 became 1e-10 to 1e-8 on
   // the pile's matrices. A GMRES solve of the true residual (iterative refinement) recovers
   // what was lost; a residual that does not shrink means the factors are too far off.
+  // The first pass aims at the tight acceptance within `cheap_iterations`: a matrix close to
+  // the factorised one (a few pairs changed) is solved exactly, as a direct solver would, and
+  // Newton keeps its finite termination on piecewise-linear problems. Past that the solve is
+  // expensive, and `accept` (the caller's forcing term) is enough.
   Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size()), r = b;
   last_iterations_ = 0;
-  for (int pass = 0; pass < 3; ++pass) {
+  const bool loose = accept > accept_;
+  bool expensive = false; // the first pass ran out of its cheap iterations
+  for (int pass = 0; pass < (loose ? 4 : 3); ++pass) {
+    const bool first = loose && pass == 0;
+    gmres.setTolerance(expensive ? std::max(tolerance_, 0.1 * accept) : tolerance_);
+    gmres.setMaxIterations(first ? std::min(cheap_iterations, max_iterations_) : max_iterations_);
     x += gmres.solve(r);
     last_iterations_ += static_cast<int>(gmres.iterations());
-    if (gmres.info() != Eigen::Success || !x.allFinite()) break;
+    if (!x.allFinite()) break;
+    const bool stopped = gmres.info() != Eigen::Success;
+    if (stopped && !first) break; // out of iterations: the factors are too far off
+    if (stopped) expensive = true;
     r = b - J * x;
-    if (r.norm() <= accept_ * b_norm) {
+    const double residual = r.norm();
+    if (residual <= accept_ * b_norm || (expensive && residual <= accept * b_norm)) {
       iterations_ += last_iterations_;
       return x;
     }

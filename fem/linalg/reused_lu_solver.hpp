@@ -29,7 +29,15 @@ public:
       : tolerance_(tolerance), accept_(accept), max_iterations_(max_iterations) {}
 
   /// x with J x = b. Throws nothing: a singular J gives non-finite entries (check them).
-  Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b);
+  Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b) {
+    return solve(J, b, accept_);
+  }
+  /// Same, taking a GMRES solution whose true relative residual is at most `accept` (at
+  /// least the constructor's: the forcing term of an inexact Newton step) once GMRES has
+  /// needed more than cheap_iterations; a cheaper solve still meets the tight acceptance.
+  Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, double accept);
+  /// GMRES iterations within which a solve meets the tight acceptance whatever `accept`.
+  static constexpr int cheap_iterations = 10;
   /// Drop the factors (the matrices to come are unrelated to the last one).
   void reset() { factorized_ = false; }
 

@@ -11,6 +11,7 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "tests/support/serial_reference.hpp"
 
@@ -75,8 +76,7 @@ struct StageForces {
 };
 
 StageForces run(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "block.yaml");
   StaticAnalysis analysis(model);
   StageForces out;
   analysis.run([&](const StepReport&) {
@@ -111,9 +111,7 @@ TEST(ContactBlock, PredictorMakesProportionalIncrementsExact) {
                             "      - {set: top, component: y, value: -1.0e-3}\n";
   for (const std::string type : {"semismooth_newton", "bipotential_uzawa"}) {
     const Model model =
-        build_model(read_problem_text(block_input(coulomb(0.3), solver(type), press), "b.yaml",
-                                      bipot::builtin_catalogue()),
-                    bipot::builtin_catalogue());
+        bipot::test::model_from_text(block_input(coulomb(0.3), solver(type), press), "b.yaml");
     StaticAnalysis analysis(model);
     std::vector<StepReport> steps;
     analysis.run([&](const StepReport& r) { steps.push_back(r); });
@@ -206,12 +204,9 @@ TEST(ContactBlock, GeneralizedNewtonConvergesQuadratically) {
                            "      - {set: bottom, component: y, value: 0}\n"
                            "      - {set: top, component: x, value: 2.0e-3}\n"
                            "      - {set: top, component: y, value: 3.0e-3}\n";
-  const Model model = build_model(
-      read_problem_text(
-          block_input(rccm, "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n",
-                      pull),
-          "b.yaml", bipot::builtin_catalogue()),
-      bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(
+      block_input(rccm, "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n", pull),
+      "b.yaml");
   StaticAnalysis analysis(model);
   int checked = 0;
   double min_beta = 1;
@@ -341,8 +336,7 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   if (mpi_rank() == 0) std::filesystem::remove_all(dir);
   barrier();
   text += "output: {directory: " + dir + "}\n";
-  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "block.yaml");
   ResultWriter writer(model, mpi_rank(), mpi_size());
   StaticAnalysis analysis(model, {}, &writer);
   analysis.run();
@@ -375,13 +369,12 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
 TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
   const std::string press_shear =
       press_shear_lift.substr(0, press_shear_lift.find("  - name: lift"));
-  const Model model = build_model(
-      read_problem_text(block_input(coulomb(0.3),
-                                    "contact_solver: {type: generalized_newton, max_iterations: 2, "
-                                    "tolerance: 1.0e-10}\n",
-                                    press_shear),
-                        "b.yaml", bipot::builtin_catalogue()),
-      bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(
+      block_input(coulomb(0.3),
+                  "contact_solver: {type: generalized_newton, max_iterations: 2, "
+                  "tolerance: 1.0e-10}\n",
+                  press_shear),
+      "b.yaml");
   StaticAnalysis analysis(model);
   std::map<int, std::vector<StepReport>> by_stage;
   const RunSummary summary =
@@ -415,10 +408,8 @@ TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
 // slides, unilateral contact), so the balance holds to round-off; friction dissipates
 // (contact work > 0 once the block has slid).
 TEST(ContactBlock, EnergyBalancesAtEveryStep) {
-  const Model model = build_model(
-      read_problem_text(block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift),
-                        "b.yaml", bipot::builtin_catalogue()),
-      bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(
+      block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift), "b.yaml");
   StaticAnalysis analysis(model);
   EnergyTotals last;
   analysis.run([&](const StepReport& r) {
@@ -443,11 +434,8 @@ TEST(ContactBlock, OutputAtAddsExactStops) {
   const std::string dir = "contact_block_output_at";
   if (mpi_rank() == 0) std::filesystem::remove_all(dir);
   barrier();
-  const Model model =
-      build_model(read_problem_text(block_input("", "", stage) + "output: {directory: " + dir +
-                                        ", every: 100}\n",
-                                    "b.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(
+      block_input("", "", stage) + "output: {directory: " + dir + ", every: 100}\n", "b.yaml");
   ResultWriter writer(model, mpi_rank(), mpi_size());
   StaticAnalysis analysis(model, {}, &writer);
   std::vector<double> factors, requested;
@@ -489,9 +477,7 @@ TEST(ContactBlock, LinearModelInSeveralIncrementsEqualsOne) {
                               "      - {set: bottom, component: x, value: 0}\n"
                               "      - {set: bottom, component: y, value: 0}\n"
                               "      - {set: top, component: y, value: -1.0e-3}\n";
-    const Model model = build_model(
-        read_problem_text(block_input("", "", stage), "b.yaml", bipot::builtin_catalogue()),
-        bipot::builtin_catalogue());
+    const Model model = bipot::test::model_from_text(block_input("", "", stage), "b.yaml");
     StaticAnalysis analysis(model);
     analysis.run();
     return analysis.displacement();
@@ -516,8 +502,7 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
   barrier();
   // No interface: one conforming body of two regions.
   const std::string text = block_input("", "", stages) + "output: {directory: " + dir + "}\n";
-  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "block.yaml");
   std::vector<double> bottom, left, top;
   {
     ResultWriter writer(model, mpi_rank(), mpi_size());
@@ -577,9 +562,7 @@ TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
     const std::string text =
         block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift) +
         "output: {directory: " + dir + ", " + output.substr(1);
-    const Model model =
-        build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
-                    bipot::builtin_catalogue());
+    const Model model = bipot::test::model_from_text(text, "block.yaml");
     {
       ResultWriter writer(model, mpi_rank(), mpi_size());
       StaticAnalysis analysis(model, {}, &writer);

@@ -23,6 +23,7 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "fem/mesh/structured_mesh.hpp"
+#include "tests/support/model_from_text.hpp"
 #include "tests/support/scratch_dir.hpp"
 #include "tests/support/serial_reference.hpp"
 
@@ -185,8 +186,7 @@ struct Pressures {
 };
 
 Pressures solve(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "hertz.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "hertz.yaml");
   StaticAnalysis analysis(model);
   const auto& pairs = model.interfaces.at(0).pairs;
   std::vector<std::size_t> order(pairs.size());

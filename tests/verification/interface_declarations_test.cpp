@@ -11,11 +11,11 @@
 //   coulomb_signorini             0 in tension (the joint opens), E δ / 2 in compression.
 // A direct solver and homogeneous fields: the only error is rounding, hence 1e-9.
 // (Regression: perfect_bonding on facet sets used to glue nothing: reaction 1.6e-14.)
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "tests/support/scratch_dir.hpp"
 
@@ -131,9 +131,7 @@ double top_reaction(const std::string& mesh, const Declaration& d, const Law& la
     << "      - {set: bottom, component: y, value: 0}\n"
     << "      - {set: top, component: x, value: 0}\n"
     << "      - {set: top, component: y, value: " << delta << "}\n";
-  const Model model =
-      build_model(read_problem_text(s.str(), "declarations.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(s.str(), "declarations.yaml");
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.reaction("top")[1];

@@ -8,6 +8,7 @@
 #include "fem/element/element_values.hpp"
 #include "fem/element/quadrature.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -82,9 +83,8 @@ double l2_error(const Model& model, const std::vector<double>& u, bool polar) {
 double solve_error(const std::string& kin, const std::string& cell, int n) {
   const bool polar = kin == "plane_strain";
   // Refinement keeps the cells' shape: the axisymmetric strip is refined in z as well.
-  Model model = build_model(read_problem_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25),
-                                              "lame_" + kin + ".yaml", bipot::builtin_catalogue()),
-                            bipot::builtin_catalogue());
+  Model model = bipot::test::model_from_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25),
+                                             "lame_" + kin + ".yaml");
   if (polar) // (r, theta) -> (x, y): orientation-preserving, so facet sets stay outward
     for (auto& x : model.mesh.nodes) {
       const double r = x[0], t = x[1];

@@ -10,6 +10,7 @@
 #include "fem/core/error.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "tests/support/bonded_column.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -34,9 +35,7 @@ std::string input(const std::string& control, const std::string& solver = "gener
 class TracedSnapBack : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
-  const Model model =
-      build_model(read_problem_text(input(GetParam()), "traced.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(input(GetParam()), "traced.yaml");
   StaticAnalysis analysis(model);
   double previous_g = 0, largest_stress = 0, smallest_delta_after_peak = top;
   int traced = 0, falling = 0;
@@ -90,9 +89,7 @@ TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
   auto final_error = [](int increments) {
     std::string text = input("dissipation");
     text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
-    const Model model =
-        build_model(read_problem_text(text, "traced.yaml", bipot::builtin_catalogue()),
-                    bipot::builtin_catalogue());
+    const Model model = bipot::test::model_from_text(text, "traced.yaml");
     StaticAnalysis analysis(model);
     EnergyTotals last;
     analysis.run([&](const StepReport& r) {

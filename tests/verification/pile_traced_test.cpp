@@ -25,19 +25,25 @@ struct Point {
   double force = 0; // kN
   bool traced = false, unstable = false;
   int iterations = 0, staggered = 0;
+  int order = 0; // the step's place in its run
 };
 
 // Pull-out steps by head displacement (rounded to 1e-9 mm, well below the step sizes).
 std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& control) {
   spec.pullout.set("control", control);
+  // Both runs to 1e-10 rather than the shipped 1e-8: at viscosity 0, β's history carries the
+  // solver's tolerance from step to step (two solves of the same increments that differ
+  // only within 1e-8 end 2.4e-6 apart in force at 6 mm), so 1e-6 agreement needs a tighter
+  // solve.
+  spec.contact_solver.parameters.set("tolerance", 1e-10);
   const Model model = build_model(pile::make_problem(spec), bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   std::map<long long, Point> out;
   analysis.run([&](const StepReport& r) {
     if (r.stage != "pullout") return;
     const pile::HeadState head = pile::head_state(model, analysis);
-    out[std::llround(head.displacement * 1e12)] = {head.force, r.traced, r.unstable, r.iterations,
-                                                   r.staggered};
+    out[std::llround(head.displacement * 1e12)] = {
+        head.force, r.traced, r.unstable, r.iterations, r.staggered, static_cast<int>(out.size())};
   });
   return out;
 }
@@ -51,9 +57,10 @@ TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
 
   int falling = 0, traced_steps = 0, iterations = 0, most = 0;
   double peak = 0, peak_at = 0, lowest_after_peak = 1e9;
+  int peak_order = 0;
   for (const auto& [key, p] : traced) {
     EXPECT_EQ(p.staggered, 0) << "no staggered fallback on the traced path";
-    if (p.force > peak) peak = p.force, peak_at = key * 1e-12;
+    if (p.force > peak) peak = p.force, peak_at = key * 1e-12, peak_order = p.order;
     if (!p.traced) continue;
     ++traced_steps;
     iterations += p.iterations;
@@ -73,18 +80,28 @@ TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
   EXPECT_LE(double(iterations) / traced_steps, 5.0);
 
   // The ramp jumps over the snap-back; both runs share the equilibria before it, and after it
-  // wherever they meet the same head displacement. Before: the same path, so to round-off.
-  // After: the paths differ (jump vs traced), and the frictional history with them: 1e-5
-  // (3.5e-6 measured at the first point after the snap-back, below 5e-7 elsewhere).
-  int common = 0;
+  // wherever they meet the same head displacement. Before (in the traced run's order): the
+  // same path, 1e-6. After: the paths differ (jump vs traced), and the frictional history
+  // with them: 1e-5 (3.5e-6 measured at the first point after the snap-back, below 5e-7
+  // elsewhere). A traced point after the peak may sit at a head displacement short of it
+  // (back on the ramp after the snap-back): at 26.01 mm the traced run's 421.4 kN and the
+  // ramp's 445.3 kN are both equilibria, on the lower and the upper branch; not compared.
+  int common = 0, other_branch = 0;
   for (const auto& [key, r] : ramped) {
     const auto it = traced.find(key);
     if (it == traced.end()) continue;
+    const bool before_peak = it->second.order < peak_order;
+    if (!before_peak && key * 1e-12 < peak_at) {
+      ++other_branch;
+      continue;
+    }
     ++common;
-    const double tolerance = key * 1e-12 < peak_at ? 1e-6 : 1e-5;
+    const double tolerance = before_peak ? 1e-6 : 1e-5;
     EXPECT_NEAR(it->second.force, r.force, tolerance * std::abs(r.force))
         << "head displacement " << key * 1e-9 << " mm";
   }
+  std::printf("ramp: %d points compared, %d on the other side of the snap-back\n", common,
+              other_branch);
   EXPECT_GE(common, 20);
 }
 

@@ -3,7 +3,6 @@
 // state untouched, a cut-back run equal to the run planned with the sub-increments, and Newton's
 // quadratic convergence with the consistent tangent, with and without the condensed generalized
 // Newton.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -11,6 +10,7 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "../support/scratch_dir.hpp"
 
@@ -99,9 +99,8 @@ TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
   ASSERT_GT(ebar, 5 * sy / E); // well into the plastic range
   // Unloading by q/E axial strain is elastic and brings σ_a back to −p.
   const double unload = top + q / E;
-  const Model model = build_model(read_problem_text(triaxial_input(p, top, 4, unload),
-                                                    "triaxial.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model =
+      bipot::test::model_from_text(triaxial_input(p, top, 4, unload), "triaxial.yaml");
   StaticAnalysis analysis(model);
   // Lateral strain: elastic (σ_r − ν(σ_a + σ_θ))/E plus the plastic ē/2 (isochoric flow).
   const double eps_r = (-p - nu * (sa - p)) / E + 0.5 * ebar;
@@ -153,10 +152,8 @@ TEST(PlasticState, DisplacementResetKeepsThePlasticHistory) {
     double force;
   };
   auto run = [&](bool reset) {
-    const Model model = build_model(
-        read_problem_text(triaxial_input(p, top, 2, reset ? unload - top : unload, reset),
-                          "triaxial.yaml", bipot::builtin_catalogue()),
-        bipot::builtin_catalogue());
+    const Model model = bipot::test::model_from_text(
+        triaxial_input(p, top, 2, reset ? unload - top : unload, reset), "triaxial.yaml");
     StaticAnalysis analysis(model);
     Result r;
     analysis.run([&](const StepReport& s) {
@@ -191,9 +188,8 @@ TEST(PlasticTriaxial, MohrCoulombStrengthAndDilatancy) {
   const double N = (1 + std::sin(phi)) / (1 - std::sin(phi));
   const std::string mc = "{type: mohr_coulomb, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
                          "cohesion: 10.0, friction_angle: 30.0, dilatancy_angle: 10.0}";
-  const Model model = build_model(read_problem_text(triaxial_input(p, -0.05, 5, -0.05, false, mc),
-                                                    "mc_triaxial.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(triaxial_input(p, -0.05, 5, -0.05, false, mc),
+                                                   "mc_triaxial.yaml");
   StaticAnalysis analysis(model);
   Index side = -1, top = -1;
   for (Index n = 0; n < model.mesh.num_nodes(); ++n) {
@@ -223,9 +219,8 @@ TEST(PlasticTriaxial, MohrCoulombStrengthAndDilatancy) {
 // The VTK series carries the materials' output fields as cell data.
 TEST(PlasticOutput, VtkHasMaterialFields) {
   test::ScratchDir dir("plastic_output");
-  const Model model = build_model(read_problem_text(triaxial_input(50.0, -0.02, 2, -0.01),
-                                                    "triaxial.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model =
+      bipot::test::model_from_text(triaxial_input(50.0, -0.02, 2, -0.01), "triaxial.yaml");
   ResultWriter writer(model, 0, 1, dir.path.string());
   StaticAnalysis analysis(model, {}, &writer);
   analysis.run();
@@ -283,9 +278,7 @@ struct Histories {
 };
 
 Histories run_footing(const std::string& text, AnalysisOptions options = {}) {
-  const Model model =
-      build_model(read_problem_text(text, "footing.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "footing.yaml");
   StaticAnalysis analysis(model, options);
   Histories h;
   analysis.run([&](const StepReport& r) {
@@ -393,12 +386,9 @@ std::string geostatic_input(double yield_stress) {
 }
 
 TEST(InitialStress, OutsideTheYieldSurfaceIsAnInputError) {
-  EXPECT_NO_THROW(build_model(
-      read_problem_text(geostatic_input(28.5), "column.yaml", bipot::builtin_catalogue()),
-      bipot::builtin_catalogue()));
+  EXPECT_NO_THROW(bipot::test::model_from_text(geostatic_input(28.5), "column.yaml"));
   try {
-    build_model(read_problem_text(geostatic_input(20.0), "column.yaml", bipot::builtin_catalogue()),
-                bipot::builtin_catalogue());
+    bipot::test::model_from_text(geostatic_input(20.0), "column.yaml");
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();

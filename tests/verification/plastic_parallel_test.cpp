@@ -2,11 +2,11 @@
 // 1-rank run, a CTest fixture set-up, writes its solutions; the 2-rank run compares), with
 // the plain Newton and with generalized_newton; and a plastic material that never yields
 // gives the linear_elastic solution to 1e-12 (von_mises and mohr_coulomb).
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "tests/support/serial_reference.hpp"
 
@@ -47,9 +47,7 @@ const std::string joint =
     "contact_solver: {type: generalized_newton, tolerance: 1.0e-12}\n";
 
 std::vector<double> solve(const std::string& text) {
-  const Model model =
-      build_model(read_problem_text(text, "footing.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "footing.yaml");
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.displacement();

@@ -5,10 +5,10 @@
 //   delta = g + sigma (L_column / E_column + L_base / E_base).
 // Both contact solvers must reproduce the law, equilibrium and beta at every increment,
 // and agree with each other.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,9 +51,7 @@ struct PullHistory {
 };
 
 PullHistory pull(const std::string& solver) {
-  const Model model =
-      build_model(read_problem_text(pull_input(solver), "pull.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(pull_input(solver), "pull.yaml");
   StaticAnalysis analysis(model);
   PullHistory h;
   analysis.run([&](const StepReport& r) {

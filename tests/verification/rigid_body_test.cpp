@@ -7,11 +7,11 @@
 //   transmits (1e-10);
 // - prescribed rotation in 2D, a moment in 3D;
 // - with a contact interface, every solver agrees; 1 and 2 ranks agree.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "tests/support/serial_reference.hpp"
 
@@ -34,8 +34,7 @@ struct Result {
 };
 
 Result solve(const std::string& text, const std::string& base) {
-  const Model model = build_model(read_problem_text(text, "rigid.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "rigid.yaml");
   StaticAnalysis analysis(model);
   analysis.run();
   Result r;
@@ -321,9 +320,7 @@ TEST(RigidBody, RigidBlockSlidesOnARigidPlane) {
   }
   std::string message;
   try {
-    build_model(read_problem_text(rigid_block("generalized_newton"), "rigid.yaml",
-                                  bipot::builtin_catalogue()),
-                bipot::builtin_catalogue());
+    bipot::test::model_from_text(rigid_block("generalized_newton"), "rigid.yaml");
   } catch (const InputError& e) {
     message = e.what();
   }

@@ -11,11 +11,11 @@
 //   on the obstacle balances the reaction at the other end;
 // - Hertz: a rigid cylinder (circle) pressed into an elastic half-plane;
 // - 3D: a block sliding on a plane, a sphere and a cylinder pressed into a block.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include "tests/support/serial_reference.hpp"
 
@@ -86,9 +86,7 @@ struct Outcome {
 };
 
 Outcome run(const std::string& text) {
-  const Model model =
-      build_model(read_problem_text(text, "obstacle.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "obstacle.yaml");
   StaticAnalysis analysis(model);
   Outcome out;
   analysis.run([&](const StepReport&) {
@@ -234,8 +232,7 @@ TEST(RigidPlane, RccmBarPulledOffFollowsTheClosedForm) {
       "stages:\n  - name: pull\n    increments: 12\n    boundary_conditions:\n"
       "      - {set: top, component: x, value: 0}\n"
       "      - {set: top, component: y, value: 3.0e-3}\n";
-  const Model model = build_model(read_problem_text(text, "pull.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "pull.yaml");
   StaticAnalysis analysis(model);
   int steps = 0, softening = 0;
   analysis.run([&](const StepReport& rep) {
@@ -304,9 +301,7 @@ TEST(RigidCircle, HertzHalfWidthAndPeakPressure) {
       "      - {set: bottom, component: y, value: 0}\n"
       "      - {set: left, component: x, value: 0}\n"
       "    obstacle_displacements:\n      - {interface: indenter, value: [0, -1.0e-3]}\n";
-  const Model model =
-      build_model(read_problem_text(text, "hertz_circle.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "hertz_circle.yaml");
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& ia = *analysis.interfaces()[0];
@@ -359,9 +354,7 @@ TEST(RigidObstacle3d, BlockSlidesOnAPlaneOnTheCone) {
       "      - {set: front, component: x, value: 3.0e-3}\n"
       "      - {set: front, component: y, value: 4.0e-3}\n"
       "      - {set: front, component: z, value: -1.0e-3}\n";
-  const Model model =
-      build_model(read_problem_text(text, "block3d.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "block3d.yaml");
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& ia = *analysis.interfaces()[0];
@@ -412,9 +405,7 @@ TEST_P(RoundObstacle3d, EquilibriumAndSolversAgree) {
            "      - {interface: indenter, value: [0, 0, -2.0e-3]}\n";
   };
   const auto outcome = [&](const std::string& type) {
-    const Model model =
-        build_model(read_problem_text(text(type), "indenter.yaml", bipot::builtin_catalogue()),
-                    bipot::builtin_catalogue());
+    const Model model = bipot::test::model_from_text(text(type), "indenter.yaml");
     StaticAnalysis analysis(model);
     analysis.run();
     std::array<double, 3> f = analysis.interfaces()[0]->resultant();

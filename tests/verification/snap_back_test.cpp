@@ -8,11 +8,11 @@
 // load step is small enough for Newton to follow (no equilibrium near the last state):
 // the analysis must find the equilibrium after the jump with its staggered fallback, flag
 // the step, and go on.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
 #include "tests/support/bonded_column.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -36,9 +36,7 @@ double opening(double delta, double lo, double hi) {
 class SnapBack : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SnapBack, StaggeredFallbackFindsTheEquilibriumAfterTheJump) {
-  const Model model =
-      build_model(read_problem_text(input(GetParam()), "snap.yaml", bipot::builtin_catalogue()),
-                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(input(GetParam()), "snap.yaml");
   StaticAnalysis analysis(model);
   int jumps = 0;
   double last_factor = 0;

@@ -2,6 +2,7 @@
 // (a key given twice, an integer that wraps, a component the kinematics lacks, two values for
 // one DOF, two outputs with one name, an endless input file) is an error at its line.
 #include "apps/catalogue/builtin_catalogue.hpp"
+#include "tests/support/model_from_text.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 #include "fem/input/condition_checks.hpp"
@@ -156,8 +157,7 @@ TEST(InputRobustness, TwoSetsSharingANodeFixedDifferently) {
   const std::string text = replace(plane, "      - {set: bottom, component: y, value: 0}\n",
                                    "      - {set: bottom, component: y, value: 0}\n"
                                    "      - {set: bottom, component: x, value: 1.0e-3}\n");
-  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "in.yaml");
   const auto p = conflicting_conditions(model.spec, model.mesh);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(has(p, "in.yaml:17:15: stages[0].boundary_conditions[2].set: node 0 at (0, 0) of "
@@ -165,9 +165,7 @@ TEST(InputRobustness, TwoSetsSharingANodeFixedDifferently) {
                      "stages[0].boundary_conditions[1].set) fixes its component x to 0.001 in "
                      "the same stage, this one to 0"));
   // Equal values on the shared node are consistent.
-  const Model same = build_model(
-      read_problem_text(replace(text, "1.0e-3", "0"), "in.yaml", bipot::builtin_catalogue()),
-      bipot::builtin_catalogue());
+  const Model same = bipot::test::model_from_text(replace(text, "1.0e-3", "0"), "in.yaml");
   EXPECT_TRUE(conflicting_conditions(same.spec, same.mesh).empty());
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Helpers of the input tests: the problems an input text produces, and text edits.
-#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +15,7 @@ namespace bipot {
 /// The problems reported while reading `text` and building its model (none if it is valid).
 inline std::vector<std::string> problems_of(const std::string& text) {
   try {
-    build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
-                bipot::builtin_catalogue());
+    bipot::test::model_from_text(text, "in.yaml");
   } catch (const InputError& e) {
     return e.problems();
   }

@@ -1,5 +1,6 @@
 // Bad input is reported in one pass, each problem as file:line:col: key.path: message.
 #include "apps/catalogue/builtin_catalogue.hpp"
+#include "tests/support/model_from_text.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 namespace bipot {
@@ -78,9 +79,8 @@ TEST(ProblemReader, BlockDiagonalsAreValidated) {
   EXPECT_EQ(read_problem_text(tri, "in.yaml", bipot::builtin_catalogue()).mesh.diagonals,
             "right"); // default
   // Crossed: 4 triangles per quad of the 2 x 2 grid.
-  EXPECT_EQ(build_model(read_problem_text(replace(tri, "    x:", "    diagonals: crossed\n    x:"),
-                                          "in.yaml", bipot::builtin_catalogue()),
-                        bipot::builtin_catalogue())
+  EXPECT_EQ(bipot::test::model_from_text(replace(tri, "    x:", "    diagonals: crossed\n    x:"),
+                                         "in.yaml")
                 .mesh.num_cells(),
             16);
   EXPECT_TRUE(reports(tri, "    x:", "    diagonals: diagonal\n    x:",
@@ -244,8 +244,7 @@ TEST(BoxSets, SelectNodesInsideAndReportEmptyBoxes) {
                                    "    regions: [soil]\n  sets:\n"
                                    "    axis_top: {min: [0, 1], max: [0, 1]}\n"
                                    "    mid_column: {min: [0.4, -1], max: [0.6, 2]}\n");
-  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "in.yaml");
   // 2 x 2 cells on [0, 1]^2: one node at (0, 1), three on x = 0.5.
   ASSERT_EQ(model.mesh.node_sets.at("axis_top").size(), 1u);
   const auto& x = model.mesh.nodes[model.mesh.node_sets.at("axis_top")[0]];
@@ -281,8 +280,7 @@ TEST(BoxSets, RegionKeepsOneSideOfAnInterface) {
                            "    seam: {min: [1, 0], max: [1, 1]}\n";
   const std::string text = replace(with_interface(iface), "    regions: [left, middle, right]\n",
                                    "    regions: [left, middle, right]\n" + sets);
-  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
-                                  bipot::builtin_catalogue());
+  const Model model = bipot::test::model_from_text(text, "in.yaml");
   // Two nodes on x = 1; the split gives the middle region copies: 2 + 2 in the plain set.
   const auto& left = model.mesh.node_sets.at("seam_left");
   const auto& middle = model.mesh.node_sets.at("seam_middle");
