@@ -36,7 +36,8 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("--app", required=True)
     p.add_argument("--input", required=True)
-    p.add_argument("--checkpoint", required=True, help="stage name of the checkpoint")
+    p.add_argument("--checkpoint", required=True,
+                   help="stage name of the checkpoint, or its file name (*.bin)")
     p.add_argument("--workdir", required=True)
     p.add_argument("--first", type=int, default=1)
     p.add_argument("--then", type=int, default=1)
@@ -48,7 +49,8 @@ def main():
     r = run(a, a.first, [a.input, "--output", whole])
     if r.returncode != 0:
         sys.exit("uninterrupted run failed:\n" + r.stdout + r.stderr)
-    ckp = os.path.join(whole, "checkpoint_%s.bin" % a.checkpoint)
+    name = a.checkpoint if a.checkpoint.endswith(".bin") else "checkpoint_%s.bin" % a.checkpoint
+    ckp = os.path.join(whole, name)
     r = run(a, a.then, [a.input, "--restart", ckp, "--output", restarted])
     if r.returncode != 0:
         sys.exit("restarted run failed:\n" + r.stdout + r.stderr)
