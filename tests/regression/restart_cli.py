@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """`bipot run --restart`: a run with `output.checkpoint` at `--first` ranks, then the same
-input restarted from its checkpoint at `--then` ranks into another folder. The restarted
-folder must hold the whole series: every CSV row of the uninterrupted run (identical at the
+input restarted from its checkpoint (at a stage end or within a stage) at `--then` ranks into another
+folder. The restarted folder must hold the whole series and every checkpoint: every CSV row of the uninterrupted run (identical at the
 same rank count, each value to 1e-12 of its file's largest magnitude across rank counts) and
 as many VTK steps, each file present. A
 checkpoint offered to another input (one value changed) is refused with exit code 2 and the
@@ -81,6 +81,10 @@ def main():
                             % (pvd, len(datasets(whole, pvd)), len(files)))
         problems += ["%s lists %s, not in the folder" % (pvd, f) for f in files
                      if not os.path.exists(os.path.join(restarted, f))]
+    # The restarted folder offers the same restarts: the checkpoints up to its own are copied,
+    # the later ones written again.
+    problems += ["%s: not in the restarted folder" % f for f in sorted(os.listdir(whole))
+                 if f.startswith("checkpoint_") and not os.path.exists(os.path.join(restarted, f))]
     # Another input: the same file with one value changed.
     with open(a.input) as f:
         text = f.read()
