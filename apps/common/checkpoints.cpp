@@ -93,7 +93,8 @@ RestartPoint restore(const std::string& file, const StateArrays& state, StaticAn
   } else {
     p.text = "after stage '" + model.spec.stages[p.stages_done - 1].name + "'";
   }
-  std::string from = std::filesystem::path(file).parent_path().string();
+  std::string& from = p.folder;
+  from = std::filesystem::path(file).parent_path().string();
   if (from.empty()) from = ".";
   writer.resume(from, p.stages_done, time, p.stage_steps);
   // The checkpoints written up to there, so that the new folder offers the same restarts.

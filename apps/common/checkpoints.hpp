@@ -48,6 +48,7 @@ struct RestartPoint {
   int stage_steps = 0;         ///< increments done in the next stage (a checkpoint within it)
   int global_steps = 0;        ///< converged increments of the run so far
   std::string text;            ///< "after stage 'a'" or "at step 3 of stage 'b' (load 3/8)"
+  std::string folder;          ///< the checkpoint's folder (the earlier results)
 };
 
 /// Restores `state` (read from `file`) into `analysis` and copies the earlier results from the
