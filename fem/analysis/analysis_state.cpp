@@ -28,6 +28,11 @@ StateArrays StaticAnalysis::Impl::save_state(std::size_t stages_done, double tim
   out["analysis.scalars"] = {reaction_scale, gravity_before, largest_any};
   out["analysis.last_resultant"] = flatten(last_resultant);
   out["analysis.largest_resultant"] = flatten(largest_resultant);
+  // Where the obstacles are: a later stage that does not move one starts from there.
+  std::vector<std::array<double, 3>> obstacles;
+  for (const auto& ia : interfaces)
+    obstacles.push_back(ia->obstacle_displacement());
+  out["analysis.obstacles"] = flatten(obstacles);
   // The solid's arrays cover the cells each rank owns: gathered in rank order (every rank
   // holds the same names, so the collective calls match).
   for (const auto& [name, values] : solid.save_state())
@@ -60,6 +65,9 @@ void StaticAnalysis::Impl::load_state(const StateArrays& state) {
   largest_any = scalars[2];
   last_resultant = unflatten(state, "analysis.last_resultant", interfaces.size());
   largest_resultant = unflatten(state, "analysis.largest_resultant", interfaces.size());
+  const auto obstacles = unflatten(state, "analysis.obstacles", interfaces.size());
+  for (std::size_t k = 0; k < interfaces.size(); ++k)
+    interfaces[k]->set_obstacle_displacement(obstacles[k]);
   solid.load_state(with_prefix(state, "solid."));
   // The laws the done stages put in force, then the interface states saved under them.
   for (const auto& sl : model.stage_laws)
