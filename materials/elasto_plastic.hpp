@@ -12,7 +12,7 @@
 ///   7      hardening variable κ (its meaning is the derived class's, see there);
 ///   8      1 if the last update was plastic, else 0.
 
-#include "materials/material.hpp"
+#include "fem/core/material.hpp"
 #include "materials/stress_tensor.hpp"
 
 namespace bipot {

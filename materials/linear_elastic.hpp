@@ -4,8 +4,8 @@
 /// out-of-plane / hoop component is kept as the third Voigt entry, so the same 4×4 matrix
 /// serves both kinematics (plane strain simply has ε_zz = 0).
 
+#include "fem/core/material.hpp"
 #include "fem/core/parameter_schema.hpp"
-#include "materials/material.hpp"
 
 namespace bipot {
 

@@ -22,12 +22,9 @@ void register_materials(Registry<Material>& registry) {
   add<DruckerPrager>(registry);
 }
 
-const Registry<Material>& materials() {
-  static const Registry<Material> registry = [] {
-    Registry<Material> r("material");
-    register_materials(r);
-    return r;
-  }();
+Registry<Material> builtin_materials() {
+  Registry<Material> registry("material");
+  register_materials(registry);
   return registry;
 }
 

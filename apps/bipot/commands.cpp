@@ -5,9 +5,6 @@
 #include "apps/common/run_folder.hpp"
 #include "apps/common/step_text.hpp"
 
-#include "contact/laws/interface_law_registry.hpp"
-#include "contact/solver/contact_solver_options.hpp"
-
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -16,7 +13,6 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "fem/linalg/linear_solver.hpp"
-#include "materials/material_registry.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -68,7 +64,7 @@ void print_usage() {
                "Exit codes: 0 ok, 1 usage, 2 invalid input, 3 solver failure, 4 other error.\n";
 }
 
-int check_command(const std::vector<std::string>& args) {
+int check_command(const std::vector<std::string>& args, const Catalogue& catalogue) {
   if (wants_help(args)) {
     if (root())
       std::cout << "bipot check FILE.yaml\n  Reads FILE.yaml, builds its mesh and materials, "
@@ -83,7 +79,8 @@ int check_command(const std::vector<std::string>& args) {
   if (file.empty()) return 1;
   return guarded([&] {
     // Every problem `run` would stop at before solving: the model's and the results folder's.
-    const Model model = checked_model_and_results_folder(read_problem_file(file));
+    const Model model =
+        checked_model_and_results_folder(read_problem_file(file, catalogue), catalogue);
     print_model_warnings(model, "bipot");
     if (root())
       std::cout << file << ": ok (" << model.mesh.num_nodes() << " nodes, "
@@ -93,7 +90,7 @@ int check_command(const std::vector<std::string>& args) {
   });
 }
 
-int run_command(const std::vector<std::string>& args) {
+int run_command(const std::vector<std::string>& args, const Catalogue& catalogue) {
   if (wants_help(args)) {
     if (root())
       std::cout << "bipot run FILE.yaml [--output DIR] [--restart CHECKPOINT] [--quiet]\n"
@@ -133,7 +130,7 @@ int run_command(const std::vector<std::string>& args) {
       one_file(files, "bipot run FILE.yaml [--output DIR] [--restart CHECKPOINT] [--quiet]");
   if (file.empty()) return 1;
   return guarded([&] {
-    const Model model = checked_model(read_problem_file(file));
+    const Model model = checked_model(read_problem_file(file, catalogue), catalogue);
     print_model_warnings(model, "bipot");
     // A checkpoint of another input is refused before the results folder is touched.
     const StateArrays restored = restart.empty() ? StateArrays{} : read_restart(restart, model);
@@ -185,7 +182,7 @@ int run_command(const std::vector<std::string>& args) {
   });
 }
 
-int describe_command(const std::vector<std::string>& args) {
+int describe_command(const std::vector<std::string>& args, const Catalogue& catalogue) {
   if (wants_help(args)) {
     if (root())
       std::cout << "bipot describe [NAME] [--markdown]\n  Without NAME: lists what can be "
@@ -194,9 +191,9 @@ int describe_command(const std::vector<std::string>& args) {
     return 0;
   }
   if (!root()) return 0;
-  const auto& mats = materials();
-  const auto& laws = contact::interface_laws();
-  const auto& solvers = contact::contact_solvers();
+  const auto& mats = catalogue.materials;
+  const auto& laws = catalogue.interface_laws;
+  const auto& solvers = catalogue.contact_solvers;
   std::vector<std::string> names;
   bool markdown = false;
   for (const auto& a : args)

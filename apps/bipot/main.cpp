@@ -1,5 +1,6 @@
 // bipot: run, check or describe finite-element models with contact interfaces.
 #include "apps/bipot/commands.hpp"
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "apps/common/app_support.hpp"
 #include "fem/linalg/parallel_environment.hpp"
 
@@ -15,9 +16,11 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
-  if (command == "run") return bipot::app::run_command(args);
-  if (command == "check") return bipot::app::check_command(args);
-  if (command == "describe") return bipot::app::describe_command(args);
+  // The one place bipot's own modules are wired in: everything below gets this catalogue.
+  const bipot::Catalogue catalogue = bipot::builtin_catalogue();
+  if (command == "run") return bipot::app::run_command(args, catalogue);
+  if (command == "check") return bipot::app::check_command(args, catalogue);
+  if (command == "describe") return bipot::app::describe_command(args, catalogue);
   if (env->rank() == 0) {
     std::cerr << "bipot: unknown command '" << command << "'\n";
     bipot::app::print_usage();

@@ -39,8 +39,8 @@ void held_node_conditions(const Model& model, std::vector<Index> held,
 
 } // namespace
 
-Model checked_model(const ProblemSpec& spec) {
-  Model model = build_model(spec);
+Model checked_model(const ProblemSpec& spec, const Catalogue& catalogue) {
+  Model model = build_model(spec, catalogue);
   // Every interface's pairs coincide on purpose; those that can open do not hold one body to
   // the other.
   std::vector<std::pair<Index, Index>> joined;
@@ -92,11 +92,11 @@ Model checked_model(const ProblemSpec& spec) {
   return model;
 }
 
-Model checked_model_and_results_folder(const ProblemSpec& spec) {
+Model checked_model_and_results_folder(const ProblemSpec& spec, const Catalogue& catalogue) {
   std::vector<std::string> problems;
   std::optional<Model> model;
   try {
-    model.emplace(checked_model(spec));
+    model.emplace(checked_model(spec, catalogue));
   } catch (const InputError& e) {
     problems = e.problems();
   }

@@ -1,6 +1,7 @@
 // pile_pullout: the pull-out of a pile from soil (axisymmetric), the seed paper's application,
 // with any of the toolkit's interface laws. A thin layer over the toolkit: it lays out the
 // problem (pile_problem.cpp), runs StaticAnalysis and writes the head curve and profiles.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "apps/common/app_support.hpp"
 #include "apps/common/checked_model.hpp"
 #include "apps/common/checkpoints.hpp"
@@ -71,9 +72,10 @@ void plot(const std::string& dir, const std::string& label) {
 
 int run(const std::string& file, const std::string& output, const std::string& restart, bool quiet,
         bool plots) {
-  pile::PileSpec spec = pile::read_pile_file(file);
+  const Catalogue catalogue = builtin_catalogue();
+  pile::PileSpec spec = pile::read_pile_file(file, catalogue);
   if (!output.empty()) spec.output.directory = output;
-  const Model model = app::checked_model(pile::make_problem(spec));
+  const Model model = app::checked_model(pile::make_problem(spec), catalogue);
   const bool root = mpi_rank() == 0;
   // A checkpoint of another input is refused before the results folder is touched.
   const StateArrays restored = restart.empty() ? StateArrays{} : app::read_restart(restart, model);
@@ -196,8 +198,9 @@ int main(int argc, char** argv) {
   }
   if (command == "check")
     return guarded([&] {
+      const bipot::Catalogue catalogue = bipot::builtin_catalogue();
       const bipot::Model model = app::checked_model_and_results_folder(
-          bipot::pile::make_problem(bipot::pile::read_pile_file(files[0])));
+          bipot::pile::make_problem(bipot::pile::read_pile_file(files[0], catalogue)), catalogue);
       if (root)
         std::cout << files[0] << ": ok (" << model.mesh.num_nodes() << " nodes, "
                   << model.mesh.num_cells() << " cells)\n";

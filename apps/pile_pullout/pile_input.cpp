@@ -1,7 +1,5 @@
 #include "apps/pile_pullout/pile_input.hpp"
 
-#include "contact/laws/interface_law_registry.hpp"
-#include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/detail/sections.hpp"
 #include "fem/input/detail/yaml_map.hpp"
@@ -142,12 +140,12 @@ void check_geometry(const YamlMap& top, PileSpec& spec) {
                             num(g.real("pile_length")) + " m)");
 }
 
-void read_materials(const YamlMap& top, PileSpec& spec) {
+void read_materials(const YamlMap& top, const SchemaIndex& materials, PileSpec& spec) {
   if (!top.has("materials")) {
     top.missing("materials", "pile: {...} and soil: {...}");
     return;
   }
-  const auto mats = input::read_materials(top);
+  const auto mats = input::read_materials(top, materials);
   bool have_pile = false, have_soil = false;
   for (const auto& m : mats) {
     if (m.region == "pile")
@@ -162,7 +160,7 @@ void read_materials(const YamlMap& top, PileSpec& spec) {
   if (!have_soil && m.valid() && !m.has("soil")) m.missing("soil", "the soil's material");
 }
 
-void read_interface(const YamlMap& top, PileSpec& spec) {
+void read_interface(const YamlMap& top, const SchemaIndex& laws, PileSpec& spec) {
   if (!top.has("interface")) {
     top.missing("interface", "law: rccm | coulomb_signorini | perfect_bonding, and its "
                              "parameters");
@@ -172,7 +170,6 @@ void read_interface(const YamlMap& top, PileSpec& spec) {
   if (!m.valid()) return;
   spec.interface_where = top.where("interface");
   if (!m.string("law", spec.law, true) || spec.law.empty()) return;
-  const auto& laws = contact::interface_laws();
   if (!laws.contains(spec.law)) {
     m.error("law", laws.unknown_message(spec.law));
     return;
@@ -224,7 +221,8 @@ void read_output(const YamlMap& top, PileSpec& spec) {
   input::read_checkpoint(m, spec.output);
 }
 
-PileSpec parse(const std::string& text, const std::string& file_name) {
+PileSpec parse(const std::string& text, const std::string& file_name,
+               const InputCatalogue& catalogue) {
   Diagnostics diag(file_name);
   const YAML::Node root = input::load_yaml(text, file_name);
   PileSpec spec;
@@ -236,14 +234,14 @@ PileSpec parse(const std::string& text, const std::string& file_name) {
                                "pile_diameter, pile_length, soil_radius, soil_depth");
   if (top.has("geometry")) check_geometry(top, spec);
   spec.mesh = read_section(top, "mesh", mesh_schema(), false, "");
-  read_materials(top, spec);
+  read_materials(top, catalogue.materials, spec);
   top.boolean("rigid_soil", spec.rigid_soil);
-  read_interface(top, spec);
+  read_interface(top, catalogue.interface_laws, spec);
   spec.linear_solver = read_section(top, "linear_solver", LinearSolver::schema(), false, "");
   if (top.has("contact_solver"))
-    spec.contact_solver = input::read_contact_solver(top);
+    spec.contact_solver = input::read_contact_solver(top, catalogue.contact_solvers);
   else
-    validate(contact::contact_solvers().schema(spec.contact_solver.type),
+    validate(catalogue.contact_solvers.schema(spec.contact_solver.type),
              spec.contact_solver.parameters);
   read_stages(top, spec);
   read_output(top, spec);
@@ -254,12 +252,13 @@ PileSpec parse(const std::string& text, const std::string& file_name) {
 
 } // namespace
 
-PileSpec read_pile_file(const std::string& path) {
-  return parse(input::read_text_file(path), path);
+PileSpec read_pile_file(const std::string& path, const InputCatalogue& catalogue) {
+  return parse(input::read_text_file(path), path, catalogue);
 }
 
-PileSpec read_pile_text(const std::string& text, const std::string& file_name) {
-  return parse(text, file_name);
+PileSpec read_pile_text(const std::string& text, const std::string& file_name,
+                        const InputCatalogue& catalogue) {
+  return parse(text, file_name, catalogue);
 }
 
 std::string describe_pile_input(bool markdown) {

@@ -4,6 +4,7 @@
 /// one pass with the toolkit's readers, so problems come as "file:line:col: key: message".
 
 #include "fem/core/parameter_schema.hpp"
+#include "fem/input/input_catalogue.hpp"
 #include "fem/input/problem_spec.hpp"
 
 #include <string>
@@ -35,10 +36,12 @@ ParamSchema geostatic_schema();
 ParamSchema installation_schema();
 ParamSchema pullout_schema();
 
-/// Reads and validates a pile input file; throws InputError listing every problem.
-PileSpec read_pile_file(const std::string& path);
+/// Reads and validates a pile input file against `catalogue` (the soil and pile materials,
+/// the law and the contact solver); throws InputError listing every problem.
+PileSpec read_pile_file(const std::string& path, const InputCatalogue& catalogue);
 /// Same from text (tests); `file_name` is used in messages.
-PileSpec read_pile_text(const std::string& text, const std::string& file_name);
+PileSpec read_pile_text(const std::string& text, const std::string& file_name,
+                        const InputCatalogue& catalogue);
 
 /// The file's sections and their parameters, as Markdown (docs) or plain text (--help).
 std::string describe_pile_input(bool markdown);

@@ -18,12 +18,9 @@ void register_interface_laws(Registry<InterfaceLaw>& registry) {
   add<Rccm>(registry);
 }
 
-const Registry<InterfaceLaw>& interface_laws() {
-  static const Registry<InterfaceLaw> registry = [] {
-    Registry<InterfaceLaw> r("interface law");
-    register_interface_laws(r);
-    return r;
-  }();
+Registry<InterfaceLaw> builtin_interface_laws() {
+  Registry<InterfaceLaw> registry("interface law");
+  register_interface_laws(registry);
   return registry;
 }
 

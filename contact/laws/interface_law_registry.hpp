@@ -6,12 +6,13 @@
 
 namespace bipot::contact {
 
-/// Adds every built-in interface law: one line per law. To add one, write its header/source
-/// pair, add its line here, a unit test and a page in docs/laws/.
+/// Adds every built-in interface law: one line per law. To add one to bipot, write its
+/// header/source pair, add its line here, a unit test and a page in docs/laws/; a project
+/// using an installed bipot adds it to its own catalogue instead
+/// (apps/catalogue/builtin_catalogue.hpp).
 void register_interface_laws(Registry<InterfaceLaw>& registry);
 
-/// The registry filled by register_interface_laws() (what = "interface law"), built on first
-/// use.
-const Registry<InterfaceLaw>& interface_laws();
+/// A fresh registry ("interface law") with the built-in laws.
+Registry<InterfaceLaw> builtin_interface_laws();
 
 } // namespace bipot::contact

@@ -4,11 +4,9 @@
 
 #include "fem/core/error.hpp"
 
-#include "contact/laws/interface_law_registry.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/gmsh/gmsh_reader.hpp"
 #include "fem/mesh/structured_mesh.hpp"
-#include "materials/material_registry.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -53,8 +51,8 @@ contact::RigidObstacle rigid_obstacle(const ObstacleSpec& spec) {
 
 // Splits the mesh along every interface: those tied in every stage (perfect bonding) keep
 // their shared nodes, the others get the body-2 side's nodes duplicated and paired.
-void split_interfaces(Model& model) {
-  const auto& laws = contact::interface_laws();
+void split_interfaces(Model& model, const Catalogue& catalogue) {
+  const auto& laws = catalogue.interface_laws;
   std::vector<contact::InterfaceDefinition> tied, split;
   std::vector<bool> is_tied;
   const auto& stages = model.spec.stages;
@@ -95,8 +93,8 @@ void split_interfaces(Model& model) {
   std::size_t it = 0, is = 0;
   for (bool t : is_tied)
     model.interfaces.push_back(std::move(t ? tied_ifaces[it++] : split_ifaces[is++]));
-  model.contact_solver = *contact::contact_solvers().create(model.spec.contact_solver.type,
-                                                            model.spec.contact_solver.parameters);
+  model.contact_solver = *catalogue.contact_solvers.create(model.spec.contact_solver.type,
+                                                           model.spec.contact_solver.parameters);
 }
 
 // Node sets selected by boxes; the tolerance is relative to the mesh size so that nodes on a
@@ -166,7 +164,7 @@ Mesh build_mesh(const MeshSpec& spec, int dim) {
   return make_block_mesh(b);
 }
 
-Model build_model(const ProblemSpec& spec) {
+Model build_model(const ProblemSpec& spec, const Catalogue& catalogue) {
   Model model;
   model.spec = spec;
   model.kinematics = parse_kinematics(spec.kinematics);
@@ -209,7 +207,7 @@ Model build_model(const ProblemSpec& spec) {
       problems.push_back(m.where + ": " + unknown_set("region", m.region, region_names));
       continue;
     }
-    model.materials.push_back(materials().create(m.type, m.parameters));
+    model.materials.push_back(catalogue.materials.create(m.type, m.parameters));
     model.material_of_region[it->second] = model.materials.back().get();
   }
   std::vector<bool> region_used(max_id + 1, false);
@@ -273,7 +271,7 @@ Model build_model(const ProblemSpec& spec) {
     if (!mesh.regions.count(s.region))
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
   if (!problems.empty()) throw InputError(problems);
-  split_interfaces(model);
+  split_interfaces(model, catalogue);
   restrict_sets_to_regions(spec.mesh, model.mesh);
   check_initial_stress_admissible(model);
   add_rigid_bodies(model); // last: its reference nodes end the mesh

@@ -4,11 +4,12 @@
 #include "contact/interface/interface_mesh.hpp"
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/analysis/catalogue.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
+#include "fem/core/material.hpp"
 #include "fem/element/kinematics.hpp"
 #include "fem/input/problem_spec.hpp"
 #include "fem/mesh/mesh.hpp"
-#include "materials/material.hpp"
 
 #include <memory>
 #include <vector>
@@ -46,8 +47,10 @@ void add_rigid_bodies(Model& model);
 /// by a boundary condition or load exists (with the nearest names), axisymmetric meshes have
 /// r ≥ 0. Then splits the mesh along each interface (perfect bonding in every stage keeps
 /// shared nodes; an interface bonded in some stages only is split and tied on its pairs).
-/// Throws InputError listing every problem with the user's file:line:col.
-Model build_model(const ProblemSpec& spec);
+/// Materials, laws and the contact solver are built from `catalogue`, which must know every
+/// name `spec` uses (the one `spec` was read with). Throws InputError listing every problem
+/// with the user's file:line:col.
+Model build_model(const ProblemSpec& spec, const Catalogue& catalogue);
 
 /// The mesh described by a MeshSpec (no checks against the rest of the input).
 Mesh build_mesh(const MeshSpec& spec, int dim);

@@ -3,9 +3,9 @@
 /// Each rank integrates the facets whose adjacent cell it owns and its own cells.
 
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/material.hpp"
 #include "fem/element/kinematics.hpp"
 #include "fem/mesh/mesh.hpp"
-#include "materials/material.hpp"
 
 #include <array>
 #include <vector>

@@ -4,10 +4,10 @@
 
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/core/material.hpp"
 #include "fem/core/state_arrays.hpp"
 #include "fem/element/element_values.hpp"
 #include "fem/mesh/mesh.hpp"
-#include "materials/material.hpp"
 
 #include <functional>
 #include <map>

@@ -1,6 +1,5 @@
 #include "fem/input/problem_reader.hpp"
 
-#include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/input/detail/sections.hpp"
@@ -37,7 +36,8 @@ const std::vector<std::pair<std::string, std::string>>& top_level_keys() {
   return keys;
 }
 
-ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::string& base_dir) {
+ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::string& base_dir,
+                      const InputCatalogue& catalogue) {
   ProblemSpec spec;
   spec.file = diag.file();
   std::vector<std::string> keys;
@@ -60,7 +60,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
     top.missing("mesh", "a Gmsh file or a blocks generator");
 
   if (top.has("materials"))
-    spec.materials = input::read_materials(top);
+    spec.materials = input::read_materials(top, catalogue.materials);
   else
     top.missing("materials", "one entry per mesh region");
 
@@ -72,15 +72,17 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   }
 
   if (top.has("initial_stress")) spec.initial_stress = input::read_initial_stress(top, dim);
-  if (top.has("interfaces")) spec.interfaces = input::read_interfaces(top, spec.kinematics);
+  if (top.has("interfaces"))
+    spec.interfaces = input::read_interfaces(top, spec.kinematics, catalogue.interface_laws);
   if (top.has("rigid_bodies")) spec.rigid_bodies = input::read_rigid_bodies(top, dim);
   if (top.has("contact_solver"))
-    spec.contact_solver = input::read_contact_solver(top);
+    spec.contact_solver = input::read_contact_solver(top, catalogue.contact_solvers);
   else
-    validate(contact::contact_solvers().schema(spec.contact_solver.type),
+    validate(catalogue.contact_solvers.schema(spec.contact_solver.type),
              spec.contact_solver.parameters);
   if (top.has("stages"))
-    spec.stages = input::read_stages(top, spec.kinematics, spec.interfaces);
+    spec.stages =
+        input::read_stages(top, spec.kinematics, spec.interfaces, catalogue.interface_laws);
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
@@ -90,23 +92,24 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
 }
 
 ProblemSpec parse(const std::string& text, const std::string& file_name,
-                  const std::string& base_dir) {
+                  const std::string& base_dir, const InputCatalogue& catalogue) {
   Diagnostics diag(file_name);
   const YAML::Node root = input::load_yaml(text, file_name);
-  ProblemSpec spec = read_root(root, diag, base_dir);
+  ProblemSpec spec = read_root(root, diag, base_dir, catalogue);
   if (!diag.problems().empty()) throw InputError(diag.problems());
   return spec;
 }
 
 } // namespace
 
-ProblemSpec read_problem_file(const std::string& path) {
+ProblemSpec read_problem_file(const std::string& path, const InputCatalogue& catalogue) {
   const auto dir = std::filesystem::path(path).parent_path().string();
-  return parse(input::read_text_file(path), path, dir);
+  return parse(input::read_text_file(path), path, dir, catalogue);
 }
 
-ProblemSpec read_problem_text(const std::string& text, const std::string& file_name) {
-  return parse(text, file_name, "");
+ProblemSpec read_problem_text(const std::string& text, const std::string& file_name,
+                              const InputCatalogue& catalogue) {
+  return parse(text, file_name, "", catalogue);
 }
 
 void check_stage_controls(const ProblemSpec& spec) {

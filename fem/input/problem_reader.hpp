@@ -1,6 +1,7 @@
 #pragma once
 /// Reads and validates a bipot input file in one pass.
 
+#include "fem/input/input_catalogue.hpp"
 #include "fem/input/problem_spec.hpp"
 
 #include <string>
@@ -16,12 +17,14 @@ constexpr long max_block_mesh_cells = 200000000;
 
 /// Parses `path`, checks every key, type and range it can without the mesh, and returns the
 /// problem. Throws InputError listing every problem as "file:line:col: key.path: message";
-/// a YAML syntax error is reported with its line and column.
-ProblemSpec read_problem_file(const std::string& path);
+/// a YAML syntax error is reported with its line and column. Materials, laws and contact
+/// solvers are looked up in `catalogue` (an application's Catalogue converts to it).
+ProblemSpec read_problem_file(const std::string& path, const InputCatalogue& catalogue);
 
 /// Same from text (tests); `file_name` is used in messages, and relative mesh paths are
 /// resolved against the current directory.
-ProblemSpec read_problem_text(const std::string& text, const std::string& file_name);
+ProblemSpec read_problem_text(const std::string& text, const std::string& file_name,
+                              const InputCatalogue& catalogue);
 
 /// The rules of path-following stages that need the rest of the problem (contact solver,
 /// interfaces, the previous stage), for a ProblemSpec built by an app rather than read from

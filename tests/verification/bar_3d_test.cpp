@@ -1,6 +1,7 @@
 // Uniaxial bar in 3D (Tet4 and Hex8) through the whole YAML path: rollers on three faces,
 // a uniform traction on the far end. The exact solution is linear, so the discrete one
 // equals it to round-off; the support reaction balances the applied force.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -32,7 +33,8 @@ TEST_P(Bar3d, UniaxialStressIsExact) {
       "      - {set: bottom, component: y, value: 0}\n"
       "      - {set: back, component: z, value: 0}\n"
       "    loads:\n      - {type: traction, set: right, value: [250.0, 0, 0]}\n";
-  const Model model = build_model(read_problem_text(text, "bar.yaml"));
+  const Model model = build_model(read_problem_text(text, "bar.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& u = analysis.displacement();

@@ -5,6 +5,7 @@
 // - lifted, the interface is open and carries nothing;
 // - both contact solvers reach the same solution; RCCM with beta0 = 0 is Coulomb-Signorini;
 // - perfect bonding equals the same mesh without any interface.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -74,7 +75,8 @@ struct StageForces {
 };
 
 StageForces run(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   StageForces out;
   analysis.run([&](const StepReport&) {
@@ -109,7 +111,9 @@ TEST(ContactBlock, PredictorMakesProportionalIncrementsExact) {
                             "      - {set: top, component: y, value: -1.0e-3}\n";
   for (const std::string type : {"semismooth_newton", "bipotential_uzawa"}) {
     const Model model =
-        build_model(read_problem_text(block_input(coulomb(0.3), solver(type), press), "b.yaml"));
+        build_model(read_problem_text(block_input(coulomb(0.3), solver(type), press), "b.yaml",
+                                      bipot::builtin_catalogue()),
+                    bipot::builtin_catalogue());
     StaticAnalysis analysis(model);
     std::vector<StepReport> steps;
     analysis.run([&](const StepReport& r) { steps.push_back(r); });
@@ -202,9 +206,12 @@ TEST(ContactBlock, GeneralizedNewtonConvergesQuadratically) {
                            "      - {set: bottom, component: y, value: 0}\n"
                            "      - {set: top, component: x, value: 2.0e-3}\n"
                            "      - {set: top, component: y, value: 3.0e-3}\n";
-  const Model model = build_model(read_problem_text(
-      block_input(rccm, "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n", pull),
-      "b.yaml"));
+  const Model model = build_model(
+      read_problem_text(
+          block_input(rccm, "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n",
+                      pull),
+          "b.yaml", bipot::builtin_catalogue()),
+      bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int checked = 0;
   double min_beta = 1;
@@ -334,7 +341,8 @@ TEST(ContactBlock, InterfaceOutputFilesHoldTheResultant) {
   if (mpi_rank() == 0) std::filesystem::remove_all(dir);
   barrier();
   text += "output: {directory: " + dir + "}\n";
-  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   ResultWriter writer(model, mpi_rank(), mpi_size());
   StaticAnalysis analysis(model, {}, &writer);
   analysis.run();
@@ -372,7 +380,8 @@ TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
                                     "contact_solver: {type: generalized_newton, max_iterations: 2, "
                                     "tolerance: 1.0e-10}\n",
                                     press_shear),
-                        "b.yaml"));
+                        "b.yaml", bipot::builtin_catalogue()),
+      bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   std::map<int, std::vector<StepReport>> by_stage;
   const RunSummary summary =
@@ -406,8 +415,10 @@ TEST(ContactBlock, CutBacksKeepThePlannedLoadLevels) {
 // slides, unilateral contact), so the balance holds to round-off; friction dissipates
 // (contact work > 0 once the block has slid).
 TEST(ContactBlock, EnergyBalancesAtEveryStep) {
-  const Model model = build_model(read_problem_text(
-      block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift), "b.yaml"));
+  const Model model = build_model(
+      read_problem_text(block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift),
+                        "b.yaml", bipot::builtin_catalogue()),
+      bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   EnergyTotals last;
   analysis.run([&](const StepReport& r) {
@@ -432,8 +443,11 @@ TEST(ContactBlock, OutputAtAddsExactStops) {
   const std::string dir = "contact_block_output_at";
   if (mpi_rank() == 0) std::filesystem::remove_all(dir);
   barrier();
-  const Model model = build_model(read_problem_text(
-      block_input("", "", stage) + "output: {directory: " + dir + ", every: 100}\n", "b.yaml"));
+  const Model model =
+      build_model(read_problem_text(block_input("", "", stage) + "output: {directory: " + dir +
+                                        ", every: 100}\n",
+                                    "b.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   ResultWriter writer(model, mpi_rank(), mpi_size());
   StaticAnalysis analysis(model, {}, &writer);
   std::vector<double> factors, requested;
@@ -460,7 +474,7 @@ TEST(ContactBlock, OutputAtAddsExactStops) {
   for (const std::string bad : {"[0.5, 0.2]", "[0, 0.5]", "[1.5]"}) {
     std::string text = block_input("", "", stage);
     text.replace(text.find("[0.1, 0.5, 0.75]"), 16, bad);
-    EXPECT_THROW(read_problem_text(text, "b.yaml"), InputError) << bad;
+    EXPECT_THROW(read_problem_text(text, "b.yaml", bipot::builtin_catalogue()), InputError) << bad;
   }
 }
 
@@ -475,7 +489,9 @@ TEST(ContactBlock, LinearModelInSeveralIncrementsEqualsOne) {
                               "      - {set: bottom, component: x, value: 0}\n"
                               "      - {set: bottom, component: y, value: 0}\n"
                               "      - {set: top, component: y, value: -1.0e-3}\n";
-    const Model model = build_model(read_problem_text(block_input("", "", stage), "b.yaml"));
+    const Model model = build_model(
+        read_problem_text(block_input("", "", stage), "b.yaml", bipot::builtin_catalogue()),
+        bipot::builtin_catalogue());
     StaticAnalysis analysis(model);
     analysis.run();
     return analysis.displacement();
@@ -500,7 +516,8 @@ TEST(ContactBlock, ReactionsHoldOnlyConstrainedComponents) {
   barrier();
   // No interface: one conforming body of two regions.
   const std::string text = block_input("", "", stages) + "output: {directory: " + dir + "}\n";
-  const Model model = build_model(read_problem_text(text, "block.yaml"));
+  const Model model = build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   std::vector<double> bottom, left, top;
   {
     ResultWriter writer(model, mpi_rank(), mpi_size());
@@ -560,7 +577,9 @@ TEST(ContactBlock, InterfaceSeriesFollowsTheOutputSettings) {
     const std::string text =
         block_input(coulomb(0.3), solver("generalized_newton"), press_shear_lift) +
         "output: {directory: " + dir + ", " + output.substr(1);
-    const Model model = build_model(read_problem_text(text, "block.yaml"));
+    const Model model =
+        build_model(read_problem_text(text, "block.yaml", bipot::builtin_catalogue()),
+                    bipot::builtin_catalogue());
     {
       ResultWriter writer(model, mpi_rank(), mpi_size());
       StaticAnalysis analysis(model, {}, &writer);

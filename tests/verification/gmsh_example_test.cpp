@@ -1,5 +1,6 @@
 // The shipped Gmsh example: uniform compression of a two-region mesh read from a .msh file
 // gives the closed-form uniform strain at every node.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -14,7 +15,9 @@ namespace {
 TEST(GmshExample, UniformCompressionIsExact) {
   const double E = 2.0e4, nu = 0.25, p = 40.0;
   const Model model =
-      build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/gmsh_two_regions.yaml"));
+      build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/gmsh_two_regions.yaml",
+                                    bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   ASSERT_EQ(model.mesh.regions.size(), 2u);
   StaticAnalysis analysis(model);
   analysis.run();

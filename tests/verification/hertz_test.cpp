@@ -16,6 +16,7 @@
 // against p0(P): +0.07% at L = 20 a; doubling L (same top displacement, so a = 0.046 m and
 // L = 44 a) gives +0.04%, halving it (L = 9 a) +0.35%. At L = 20 a the domain effect is a
 // few hundredths of a percent, below the discretisation error of h = a/16.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
@@ -184,7 +185,8 @@ struct Pressures {
 };
 
 Pressures solve(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "hertz.yaml"));
+  const Model model = build_model(read_problem_text(text, "hertz.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   const auto& pairs = model.interfaces.at(0).pairs;
   std::vector<std::size_t> order(pairs.size());
@@ -389,7 +391,7 @@ TEST(NormalPairing, OnlyForFacetSetsAndTwoValues) {
   const std::string law = "    law: coulomb_signorini\n";
   const auto message = [](const std::string& text) -> std::string {
     try {
-      read_problem_text(text, "pairing.yaml");
+      read_problem_text(text, "pairing.yaml", bipot::builtin_catalogue());
     } catch (const InputError& e) {
       return e.what();
     }

@@ -11,6 +11,7 @@
 //   coulomb_signorini             0 in tension (the joint opens), E δ / 2 in compression.
 // A direct solver and homogeneous fields: the only error is rounding, hence 1e-9.
 // (Regression: perfect_bonding on facet sets used to glue nothing: reaction 1.6e-14.)
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
@@ -130,7 +131,9 @@ double top_reaction(const std::string& mesh, const Declaration& d, const Law& la
     << "      - {set: bottom, component: y, value: 0}\n"
     << "      - {set: top, component: x, value: 0}\n"
     << "      - {set: top, component: y, value: " << delta << "}\n";
-  const Model model = build_model(read_problem_text(s.str(), "declarations.yaml"));
+  const Model model =
+      build_model(read_problem_text(s.str(), "declarations.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.reaction("top")[1];

@@ -2,6 +2,7 @@
 // (r, z) strip and in plane strain on a quarter annulus mapped from an (r, θ) block mesh.
 // The L2 displacement error must converge at rate >= 1.9 (linear) and >= 2.9 (quadratic)
 // over three refinements.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/element/element_values.hpp"
@@ -81,8 +82,9 @@ double l2_error(const Model& model, const std::vector<double>& u, bool polar) {
 double solve_error(const std::string& kin, const std::string& cell, int n) {
   const bool polar = kin == "plane_strain";
   // Refinement keeps the cells' shape: the axisymmetric strip is refined in z as well.
-  Model model = build_model(
-      read_problem_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25), "lame_" + kin + ".yaml"));
+  Model model = build_model(read_problem_text(input(kin, cell, n, polar ? M_PI / 2 : 0.25),
+                                              "lame_" + kin + ".yaml", bipot::builtin_catalogue()),
+                            bipot::builtin_catalogue());
   if (polar) // (r, theta) -> (x, y): orientation-preserving, so facet sets stay outward
     for (auto& x : model.mesh.nodes) {
       const double r = x[0], t = x[1];
@@ -144,7 +146,9 @@ namespace {
 // the outer surface: quad8 with 16 graded cells, discretisation error well below 1e-5.
 TEST(ThickCylinderExample, MatchesLame) {
   const Model model =
-      build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/thick_cylinder.yaml"));
+      build_model(read_problem_file(BIPOT_SOURCE_DIR "/inputs/examples/thick_cylinder.yaml",
+                                    bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& u = analysis.displacement();

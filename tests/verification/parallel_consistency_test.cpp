@@ -1,5 +1,6 @@
 // The same problem on 1 and 2 MPI ranks gives the same displacements to 1e-10 relative.
 // The 1-rank run (CTest fixture setup) writes its solution; the 2-rank run compares.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -37,7 +38,9 @@ std::vector<double> solve(const std::string& method) {
       "      - {set: right, component: r, value: 0}\n"
       "      - {set: bottom, component: z, value: 0}\n"
       "    loads:\n      - {type: gravity}\n      - {type: pressure, set: top, value: 50}\n";
-  const Model model = build_model(read_problem_text(text, "consistency.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "consistency.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.displacement();
@@ -83,7 +86,9 @@ std::vector<double> solve_contact(const std::string& solver = "semismooth_newton
       "      - {set: bottom, component: y, value: 0}\n"
       "      - {set: top, component: x, value: 2.0e-3}\n"
       "      - {set: top, component: y, value: 1.0e-3}\n";
-  const Model model = build_model(read_problem_text(text, "contact_consistency.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "contact_consistency.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.displacement();

@@ -4,6 +4,7 @@
 // (g*, δ*) δ(g) falls steeply down to δ_min at g = (3w²/(Ck))^¼, then rises again: the
 // snap-back a displacement ramp jumps over. Traced, every step must lie on that curve and the
 // unstable branch (λ falling) must be followed with no staggered fallback.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/core/error.hpp"
@@ -33,7 +34,9 @@ std::string input(const std::string& control, const std::string& solver = "gener
 class TracedSnapBack : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
-  const Model model = build_model(read_problem_text(input(GetParam()), "traced.yaml"));
+  const Model model =
+      build_model(read_problem_text(input(GetParam()), "traced.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   double previous_g = 0, largest_stress = 0, smallest_delta_after_peak = top;
   int traced = 0, falling = 0;
@@ -87,7 +90,9 @@ TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
   auto final_error = [](int increments) {
     std::string text = input("dissipation");
     text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
-    const Model model = build_model(read_problem_text(text, "traced.yaml"));
+    const Model model =
+        build_model(read_problem_text(text, "traced.yaml", bipot::builtin_catalogue()),
+                    bipot::builtin_catalogue());
     StaticAnalysis analysis(model);
     EnergyTotals last;
     analysis.run([&](const StepReport& r) {
@@ -109,7 +114,7 @@ TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
 
 void expect_input_error(const std::string& text, const std::string& fragment) {
   try {
-    read_problem_text(text, "bad.yaml");
+    read_problem_text(text, "bad.yaml", bipot::builtin_catalogue());
     ADD_FAILURE() << "accepted; expected an error containing: " << fragment;
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();

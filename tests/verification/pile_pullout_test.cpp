@@ -5,6 +5,7 @@
 //   4. the geostatic stage: shaft contact pressure K0 γ |z|, stresses kept by the reset.
 // Each problem goes through the app's own input reader and problem layout
 // (read_pile_text → make_problem → build_model), so the test checks what the app runs.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -35,7 +36,7 @@ const double area = pi * a * a, EA = E_pile * area;
 using StepFn = std::function<void(const StepReport&, const Model&, const StaticAnalysis&)>;
 
 void run(const ProblemSpec& problem, const StepFn& on_step) {
-  const Model model = build_model(problem);
+  const Model model = build_model(problem, bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run([&](const StepReport& r) { on_step(r, model, analysis); });
 }
@@ -99,7 +100,8 @@ void check_shear_lag(double Ct, double Cn) {
   // 52 cells of 0.25 m along the shaft (λh = 0.029) and 3 across the pile: the lumped
   // springs and linear elements err by O((λh)²/12) ≈ 1e-4 and the shear deformation of the
   // pile section by O((λa)²/2) ≈ 1e-4; refining to 104 × 6 changes K by < 1e-4 (measured).
-  const auto spec = pile::read_pile_text(rigid_soil_input(L, 52, 3, rccm, u_head, 1), "lag.yaml");
+  const auto spec = pile::read_pile_text(rigid_soil_input(L, 52, 3, rccm, u_head, 1), "lag.yaml",
+                                         bipot::builtin_catalogue());
   pile::HeadState head;
   double toe_force = 0;
   run(pile::make_problem(spec), [&](const StepReport& r, const Model& m, const StaticAnalysis& s) {
@@ -152,7 +154,7 @@ TEST(PilePullout, LongPileAdhesionPeak) {
   // ~3 m long, 12 cells. A 1D bar model of the same problem (same cells and steps) gives the
   // peak 0.05 % below this one, and halving its cells moves the peak by 2e-5.
   const auto spec = pile::read_pile_text(rigid_soil_input(L, 80, 2, rccm, delta_end, increments),
-                                         "adhesion.yaml");
+                                         "adhesion.yaml", bipot::builtin_catalogue());
   struct Step {
     double delta, force, u_toe, toe_force;
     bool unstable;
@@ -244,7 +246,7 @@ std::string bonded_input(const std::string& cell, double radius, double depth, i
 
 double bonded_head_stiffness(const std::string& input) {
   double K = 0;
-  run(pile::make_problem(pile::read_pile_text(input, "bonded.yaml")),
+  run(pile::make_problem(pile::read_pile_text(input, "bonded.yaml", bipot::builtin_catalogue())),
       [&](const StepReport& r, const Model& m, const StaticAnalysis& s) {
         if (r.stage != "pullout") return;
         const auto head = pile::head_state(m, s);
@@ -377,7 +379,8 @@ PressureError pressure_error(const std::vector<PairState>& shaft, double K0, dou
 // head), so they are left to the next test; so are the pairs shallower than 1 m for the 2 %
 // check (the offset is over 2 % of K0 γ|z| there), which the absolute check still covers.
 TEST(PilePullout, GeostaticStageShippedInput) {
-  const pile::PileSpec spec = pile::read_pile_text(shipped_rccm_text(), "rccm.yaml");
+  const pile::PileSpec spec =
+      pile::read_pile_text(shipped_rccm_text(), "rccm.yaml", bipot::builtin_catalogue());
   const double K0 = spec.geostatic.real("K0"), gamma = spec.soil.parameters.real("unit_weight");
   const double L = spec.geometry.real("pile_length");
   const auto [geo, rest] = geostatic_and_rest(spec);
@@ -432,7 +435,8 @@ TEST(PilePullout, GeostaticStageShippedInput) {
 // the nodal forces, whose scale is the soil's weight) — measured 2e-7 K0 γL on the shaft and
 // 3e-6 γL on the toe, whose pairs are small — and still 200 times below the 2 % above.
 TEST(PilePullout, GeostaticStageIsExactForEqualUnitWeights) {
-  pile::PileSpec spec = pile::read_pile_text(shipped_rccm_text(), "rccm.yaml");
+  pile::PileSpec spec =
+      pile::read_pile_text(shipped_rccm_text(), "rccm.yaml", bipot::builtin_catalogue());
   const double K0 = spec.geostatic.real("K0"), gamma = spec.soil.parameters.real("unit_weight");
   const double L = spec.geometry.real("pile_length");
   spec.pile.parameters.set("unit_weight", gamma);

@@ -4,6 +4,7 @@
 //   - follow the snap-back: steps on which head force and head displacement both fall,
 //   - need no staggered fallback and at most a few Newton iterations per traced step,
 //   - pass through the ramp's equilibria wherever both runs have one (same head displacement).
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
 #include "apps/pile_pullout/pile_problem.hpp"
 #include "apps/pile_pullout/pile_results.hpp"
@@ -29,7 +30,7 @@ struct Point {
 // Pull-out steps by head displacement (rounded to 1e-9 mm, well below the step sizes).
 std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& control) {
   spec.pullout.set("control", control);
-  const Model model = build_model(pile::make_problem(spec));
+  const Model model = build_model(pile::make_problem(spec), bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   std::map<long long, Point> out;
   analysis.run([&](const StepReport& r) {
@@ -43,7 +44,8 @@ std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& cont
 
 TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
   const pile::PileSpec spec =
-      pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml");
+      pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml",
+                           bipot::builtin_catalogue());
   const auto traced = pull_out(spec, "dissipation");
   const auto ramped = pull_out(spec, "ramp");
 

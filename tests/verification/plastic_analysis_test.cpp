@@ -3,6 +3,7 @@
 // state untouched, a cut-back run equal to the run planned with the sub-increments, and Newton's
 // quadratic convergence with the consistent tangent, with and without the condensed generalized
 // Newton.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -98,8 +99,9 @@ TEST(PlasticTriaxial, AxialStressMatchesClosedForm) {
   ASSERT_GT(ebar, 5 * sy / E); // well into the plastic range
   // Unloading by q/E axial strain is elastic and brings σ_a back to −p.
   const double unload = top + q / E;
-  const Model model =
-      build_model(read_problem_text(triaxial_input(p, top, 4, unload), "triaxial.yaml"));
+  const Model model = build_model(read_problem_text(triaxial_input(p, top, 4, unload),
+                                                    "triaxial.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   // Lateral strain: elastic (σ_r − ν(σ_a + σ_θ))/E plus the plastic ē/2 (isochoric flow).
   const double eps_r = (-p - nu * (sa - p)) / E + 0.5 * ebar;
@@ -151,8 +153,10 @@ TEST(PlasticState, DisplacementResetKeepsThePlasticHistory) {
     double force;
   };
   auto run = [&](bool reset) {
-    const Model model = build_model(read_problem_text(
-        triaxial_input(p, top, 2, reset ? unload - top : unload, reset), "triaxial.yaml"));
+    const Model model = build_model(
+        read_problem_text(triaxial_input(p, top, 2, reset ? unload - top : unload, reset),
+                          "triaxial.yaml", bipot::builtin_catalogue()),
+        bipot::builtin_catalogue());
     StaticAnalysis analysis(model);
     Result r;
     analysis.run([&](const StepReport& s) {
@@ -187,8 +191,9 @@ TEST(PlasticTriaxial, MohrCoulombStrengthAndDilatancy) {
   const double N = (1 + std::sin(phi)) / (1 - std::sin(phi));
   const std::string mc = "{type: mohr_coulomb, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
                          "cohesion: 10.0, friction_angle: 30.0, dilatancy_angle: 10.0}";
-  const Model model = build_model(
-      read_problem_text(triaxial_input(p, -0.05, 5, -0.05, false, mc), "mc_triaxial.yaml"));
+  const Model model = build_model(read_problem_text(triaxial_input(p, -0.05, 5, -0.05, false, mc),
+                                                    "mc_triaxial.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   Index side = -1, top = -1;
   for (Index n = 0; n < model.mesh.num_nodes(); ++n) {
@@ -218,8 +223,9 @@ TEST(PlasticTriaxial, MohrCoulombStrengthAndDilatancy) {
 // The VTK series carries the materials' output fields as cell data.
 TEST(PlasticOutput, VtkHasMaterialFields) {
   test::ScratchDir dir("plastic_output");
-  const Model model =
-      build_model(read_problem_text(triaxial_input(50.0, -0.02, 2, -0.01), "triaxial.yaml"));
+  const Model model = build_model(read_problem_text(triaxial_input(50.0, -0.02, 2, -0.01),
+                                                    "triaxial.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   ResultWriter writer(model, 0, 1, dir.path.string());
   StaticAnalysis analysis(model, {}, &writer);
   analysis.run();
@@ -277,7 +283,9 @@ struct Histories {
 };
 
 Histories run_footing(const std::string& text, AnalysisOptions options = {}) {
-  const Model model = build_model(read_problem_text(text, "footing.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "footing.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model, options);
   Histories h;
   analysis.run([&](const StepReport& r) {
@@ -385,9 +393,12 @@ std::string geostatic_input(double yield_stress) {
 }
 
 TEST(InitialStress, OutsideTheYieldSurfaceIsAnInputError) {
-  EXPECT_NO_THROW(build_model(read_problem_text(geostatic_input(28.5), "column.yaml")));
+  EXPECT_NO_THROW(build_model(
+      read_problem_text(geostatic_input(28.5), "column.yaml", bipot::builtin_catalogue()),
+      bipot::builtin_catalogue()));
   try {
-    build_model(read_problem_text(geostatic_input(20.0), "column.yaml"));
+    build_model(read_problem_text(geostatic_input(20.0), "column.yaml", bipot::builtin_catalogue()),
+                bipot::builtin_catalogue());
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string what = e.what();

@@ -4,6 +4,7 @@
 // - a thick-walled cylinder under internal pressure (Hill 1950, ch. V; Yu 2000 for
 //   Mohr–Coulomb): pressure against plastic radius and outer expansion, limit pressure;
 // - a smooth strip footing on weightless Tresca soil: Prandtl's bearing capacity (2 + π) c.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -88,7 +89,9 @@ void check_pressure_expansion(const std::string& material, const Cavity& closed,
   const std::string text = cylinder_input(
       material, "    loads:\n      - {type: pressure, set: left, value: " + exact(p_end) + "}\n",
       9);
-  const Model model = build_model(read_problem_text(text, "cylinder.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "cylinder.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   Index outer = -1;
   for (Index k = 0; k < model.mesh.num_nodes(); ++k)
@@ -156,7 +159,9 @@ TEST(ThickCylinder, MohrCoulombPressureExpansionAndPlasticRadius) {
 TEST(ThickCylinder, LimitPressure) {
   const std::string text =
       cylinder_input(von_mises, "      - {set: left, component: r, value: 0.02}\n", 20);
-  const Model model = build_model(read_problem_text(text, "cylinder_limit.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "cylinder_limit.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   const double p = std::abs(analysis.reaction("left")[0]) / (2 * M_PI * hill.a * 0.02);
@@ -189,7 +194,9 @@ TEST(StripFooting, PrandtlBearingCapacity) {
       "      - {set: left, component: x, value: 0}\n"
       "      - {set: right, component: x, value: 0}\n"
       "      - {set: footing, component: y, value: -0.05}\n";
-  const Model model = build_model(read_problem_text(text, "footing.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "footing.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int iterations = 0, increments = 0;
   analysis.run([&](const StepReport& r) {

@@ -2,6 +2,7 @@
 // 1-rank run, a CTest fixture set-up, writes its solutions; the 2-rank run compares), with
 // the plain Newton and with generalized_newton; and a plastic material that never yields
 // gives the linear_elastic solution to 1e-12 (von_mises and mohr_coulomb).
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -46,7 +47,9 @@ const std::string joint =
     "contact_solver: {type: generalized_newton, tolerance: 1.0e-12}\n";
 
 std::vector<double> solve(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "footing.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "footing.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   return analysis.displacement();

@@ -5,6 +5,7 @@
 //   delta = g + sigma (L_column / E_column + L_base / E_base).
 // Both contact solvers must reproduce the law, equilibrium and beta at every increment,
 // and agree with each other.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -50,7 +51,9 @@ struct PullHistory {
 };
 
 PullHistory pull(const std::string& solver) {
-  const Model model = build_model(read_problem_text(pull_input(solver), "pull.yaml"));
+  const Model model =
+      build_model(read_problem_text(pull_input(solver), "pull.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   PullHistory h;
   analysis.run([&](const StepReport& r) {

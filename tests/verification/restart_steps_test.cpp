@@ -7,6 +7,7 @@
 // every kind of mid-stage state: a von Mises block (plastic strains), RCCM adhesion β, a law
 // change by the last stage (ρ kept), and a checkpoint taken while an earlier cut-back still
 // shortens the increments (cut-back level > 0).
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -134,7 +135,8 @@ void expect_continues(const Steps& whole, const Steps& continued, std::size_t sk
 }
 
 TEST(RestartWithinStage, ContinuesLikeTheUninterruptedRunFromEveryPlannedStep) {
-  const Model model = build_model(read_problem_text(input, "restart_steps.yaml"));
+  const Model model = build_model(
+      read_problem_text(input, "restart_steps.yaml", builtin_catalogue()), builtin_catalogue());
   struct Saved {
     std::size_t increments; ///< converged before it
     std::string what;
@@ -200,7 +202,8 @@ TEST(RestartWithinStage, ObstacleStaysWhereTheStagesBeforeMovedIt) {
       "  - name: shear\n    increments: 4\n"
       "    boundary_conditions: [{set: top, component: x, value: 4.0e-3}, "
       "{set: top, component: y, value: 0}]\n";
-  const Model model = build_model(read_problem_text(obstacle, "obstacle.yaml"));
+  const Model model = build_model(read_problem_text(obstacle, "obstacle.yaml", builtin_catalogue()),
+                                  builtin_catalogue());
   StateArrays after_press, within_shear;
   StaticAnalysis* whole_run = nullptr;
   AnalysisOptions options;

@@ -5,6 +5,7 @@
 // it; CTest runs 1 → 2 and 2 → 1). The model carries every kind of state: σ0 changed by a
 // displacement reset, RCCM adhesion β, slips, multipliers, a law changed by a stage.
 // Checkpoints of another input, of another format and non-checkpoint files are refused.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/checkpoint.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -104,7 +105,9 @@ void expect_continues(const Steps& whole, const Steps& continued, const std::str
 }
 
 TEST(Restart, ContinuesLikeTheUninterruptedRun) {
-  const Model model = build_model(read_problem_text(input, "restart.yaml"));
+  const Model model =
+      build_model(read_problem_text(input, "restart.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   const std::uint64_t hash = input_hash(model.spec, input);
   StateArrays saved;
   StaticAnalysis* whole_run = nullptr;

@@ -7,6 +7,7 @@
 //   transmits (1e-10);
 // - prescribed rotation in 2D, a moment in 3D;
 // - with a contact interface, every solver agrees; 1 and 2 ranks agree.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -33,7 +34,8 @@ struct Result {
 };
 
 Result solve(const std::string& text, const std::string& base) {
-  const Model model = build_model(read_problem_text(text, "rigid.yaml"));
+  const Model model = build_model(read_problem_text(text, "rigid.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   Result r;
@@ -319,7 +321,9 @@ TEST(RigidBody, RigidBlockSlidesOnARigidPlane) {
   }
   std::string message;
   try {
-    build_model(read_problem_text(rigid_block("generalized_newton"), "rigid.yaml"));
+    build_model(read_problem_text(rigid_block("generalized_newton"), "rigid.yaml",
+                                  bipot::builtin_catalogue()),
+                bipot::builtin_catalogue());
   } catch (const InputError& e) {
     message = e.what();
   }

@@ -11,6 +11,7 @@
 //   on the obstacle balances the reaction at the other end;
 // - Hertz: a rigid cylinder (circle) pressed into an elastic half-plane;
 // - 3D: a block sliding on a plane, a sphere and a cylinder pressed into a block.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -85,7 +86,9 @@ struct Outcome {
 };
 
 Outcome run(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "obstacle.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "obstacle.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   Outcome out;
   analysis.run([&](const StepReport&) {
@@ -231,7 +234,8 @@ TEST(RigidPlane, RccmBarPulledOffFollowsTheClosedForm) {
       "stages:\n  - name: pull\n    increments: 12\n    boundary_conditions:\n"
       "      - {set: top, component: x, value: 0}\n"
       "      - {set: top, component: y, value: 3.0e-3}\n";
-  const Model model = build_model(read_problem_text(text, "pull.yaml"));
+  const Model model = build_model(read_problem_text(text, "pull.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int steps = 0, softening = 0;
   analysis.run([&](const StepReport& rep) {
@@ -300,7 +304,9 @@ TEST(RigidCircle, HertzHalfWidthAndPeakPressure) {
       "      - {set: bottom, component: y, value: 0}\n"
       "      - {set: left, component: x, value: 0}\n"
       "    obstacle_displacements:\n      - {interface: indenter, value: [0, -1.0e-3]}\n";
-  const Model model = build_model(read_problem_text(text, "hertz_circle.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "hertz_circle.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& ia = *analysis.interfaces()[0];
@@ -353,7 +359,9 @@ TEST(RigidObstacle3d, BlockSlidesOnAPlaneOnTheCone) {
       "      - {set: front, component: x, value: 3.0e-3}\n"
       "      - {set: front, component: y, value: 4.0e-3}\n"
       "      - {set: front, component: z, value: -1.0e-3}\n";
-  const Model model = build_model(read_problem_text(text, "block3d.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "block3d.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   analysis.run();
   const auto& ia = *analysis.interfaces()[0];
@@ -404,7 +412,9 @@ TEST_P(RoundObstacle3d, EquilibriumAndSolversAgree) {
            "      - {interface: indenter, value: [0, 0, -2.0e-3]}\n";
   };
   const auto outcome = [&](const std::string& type) {
-    const Model model = build_model(read_problem_text(text(type), "indenter.yaml"));
+    const Model model =
+        build_model(read_problem_text(text(type), "indenter.yaml", bipot::builtin_catalogue()),
+                    bipot::builtin_catalogue());
     StaticAnalysis analysis(model);
     analysis.run();
     std::array<double, 3> f = analysis.interfaces()[0]->resultant();

@@ -8,6 +8,7 @@
 // load step is small enough for Newton to follow (no equilibrium near the last state):
 // the analysis must find the equilibrium after the jump with its staggered fallback, flag
 // the step, and go on.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -35,7 +36,9 @@ double opening(double delta, double lo, double hi) {
 class SnapBack : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SnapBack, StaggeredFallbackFindsTheEquilibriumAfterTheJump) {
-  const Model model = build_model(read_problem_text(input(GetParam()), "snap.yaml"));
+  const Model model =
+      build_model(read_problem_text(input(GetParam()), "snap.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int jumps = 0;
   double last_factor = 0;

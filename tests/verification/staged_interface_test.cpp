@@ -6,6 +6,7 @@
 //   pairs: while bonded it equals the shared-node model (perfect bonding in every stage);
 // - bonded installation, then RCCM: equals the RCCM model loaded the same way, since the
 //   installation (uniaxial compression of a homogeneous column) leaves no jump either way.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -55,7 +56,9 @@ struct Result {
 };
 
 Result run(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "staged.yaml"));
+  const Model model =
+      build_model(read_problem_text(text, "staged.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   Result out;
   analysis.run([&](const StepReport&) {

@@ -4,6 +4,7 @@
 // column, t_n = −σ (tension), t_t = 0, and the resultant −σ × width. The base's weight at the
 // interface nodes (γ = 200 kN/m³ over 0.5 m: 100 kPa, of the order of σ) is what body 1's
 // internal force holds besides the interface force; forgetting to remove it fails the test.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -50,7 +51,9 @@ materials:
 )");
 
 TEST(TiedInterface, TractionsEqualTheColumnStress) {
-  const Model model = build_model(read_problem_text(kInput, "tied.yaml"));
+  const Model model =
+      build_model(read_problem_text(kInput, "tied.yaml", bipot::builtin_catalogue()),
+                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int checked = 0;
   analysis.run([&](const StepReport&) {
@@ -102,7 +105,8 @@ materials:
 )");
 
 TEST(TiedInterface, SupportedSharedNodeKeepsThePileInEquilibrium) {
-  const Model model = build_model(read_problem_text(kPile, "pile.yaml"));
+  const Model model = build_model(read_problem_text(kPile, "pile.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
   int checked = 0;
   analysis.run([&](const StepReport&) {

@@ -1,10 +1,7 @@
 #include "fem/input/detail/sections.hpp"
 
-#include "contact/laws/interface_law_registry.hpp"
-#include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/input/problem_reader.hpp"
-#include "materials/material_registry.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -230,14 +227,13 @@ ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
   return read_parameters_node(parent.node(key), parent.path(key), parent.diag(), schema, skip);
 }
 
-std::vector<MaterialSpec> read_materials(const YamlMap& top) {
+std::vector<MaterialSpec> read_materials(const YamlMap& top, const SchemaIndex& registry) {
   std::vector<MaterialSpec> out;
   const YAML::Node node = top.node("materials");
   if (!node.IsMap() || node.size() == 0) {
     top.error("materials", "expected a map: region name -> {type: <material>, parameters...}");
     return out;
   }
-  const auto& registry = materials();
   report_duplicate_keys(node, "materials", top.diag());
   for (const auto& kv : node) {
     MaterialSpec mat;
@@ -300,9 +296,9 @@ std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim) 
   return out;
 }
 
-std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics) {
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics,
+                                           const SchemaIndex& laws) {
   std::vector<InterfaceSpec> out;
-  const auto& laws = contact::interface_laws();
   UniqueNames names("interface", "each interface needs its own, for its output files "
                                  "interface_<name>.csv and interface_<name>.pvd");
   const auto entries = list_entries(
@@ -352,9 +348,8 @@ std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string
   return out;
 }
 
-ContactSolverSpec read_contact_solver(const YamlMap& top) {
+ContactSolverSpec read_contact_solver(const YamlMap& top, const SchemaIndex& solvers) {
   ContactSolverSpec spec;
-  const auto& solvers = contact::contact_solvers();
   const YAML::Node node = top.node("contact_solver");
   spec.where = top.where("contact_solver");
   if (!node.IsMap() || !node["type"]) {

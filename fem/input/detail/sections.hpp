@@ -4,22 +4,25 @@
 
 #include "fem/core/parameter_schema.hpp"
 #include "fem/input/detail/yaml_map.hpp"
+#include "fem/input/input_catalogue.hpp"
 #include "fem/input/problem_spec.hpp"
 
 namespace bipot::input {
 
 MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir);
-std::vector<MaterialSpec> read_materials(const YamlMap& top);
+std::vector<MaterialSpec> read_materials(const YamlMap& top, const SchemaIndex& materials);
 std::vector<InitialStressSpec> read_initial_stress(const YamlMap& top, int dim);
 /// The displacement components of a kinematics by index ("x", "y" / "r", "z" / "x", "y", "z").
 const std::vector<std::string>& component_names(const std::string& kinematics);
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics,
-                                   const std::vector<InterfaceSpec>& interfaces);
+                                   const std::vector<InterfaceSpec>& interfaces,
+                                   const SchemaIndex& laws);
 /// A stage's `interfaces:` map (law or parameter changes); `active` holds each interface's
 /// law and parameters in force before the stage and is updated.
 void read_stage_interfaces(const YamlMap& stage, const std::vector<InterfaceSpec>& interfaces,
-                           std::vector<InterfaceLawChangeSpec>& active, StageSpec& st);
+                           const SchemaIndex& laws, std::vector<InterfaceLawChangeSpec>& active,
+                           StageSpec& st);
 /// Cross-section rules of path-following stages (need the contact solver and interfaces).
 void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag);
 OutputSpec read_output(const YamlMap& top);
@@ -28,7 +31,8 @@ OutputSpec read_output(const YamlMap& top);
 /// step within a path-following stage.
 void read_checkpoint(const YamlMap& output, OutputSpec& out);
 void check_checkpoints(const ProblemSpec& spec, Diagnostics& diag);
-std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics);
+std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics,
+                                           const SchemaIndex& laws);
 /// An interface with `obstacle` (obstacle_section.cpp): the obstacle, and the one facet set
 /// of the body it needs (no `between`, no `pairing`).
 void read_obstacle_interface(const YamlMap& m, const std::string& kinematics, InterfaceSpec& spec);
@@ -38,7 +42,7 @@ std::vector<RigidBodySpec> read_rigid_bodies(const YamlMap& top, int dim);
 void read_stage_rigid_bodies(const YamlMap& stage, const std::string& kinematics, StageSpec& st);
 /// A stage's `obstacle_displacements` (obstacle_section.cpp).
 void read_obstacle_displacements(const YamlMap& stage, int dim, StageSpec& st);
-ContactSolverSpec read_contact_solver(const YamlMap& top);
+ContactSolverSpec read_contact_solver(const YamlMap& top, const SchemaIndex& solvers);
 
 /// Reads the map at `parent[key]` as parameters of `schema` (keys in `skip` are left to the
 /// caller), decoding each value by its declared type, validating ranges, filling defaults,

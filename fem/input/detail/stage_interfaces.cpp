@@ -1,6 +1,5 @@
 // A stage's `interfaces:` map: per interface, a new law and/or new parameters from this stage
 // on (docs/input_reference.md, "Stages"; what happens to the state: docs/theory.md).
-#include "contact/laws/interface_law_registry.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/input/detail/sections.hpp"
 
@@ -9,7 +8,8 @@
 namespace bipot::input {
 
 void read_stage_interfaces(const YamlMap& stage, const std::vector<InterfaceSpec>& interfaces,
-                           std::vector<InterfaceLawChangeSpec>& active, StageSpec& st) {
+                           const SchemaIndex& laws, std::vector<InterfaceLawChangeSpec>& active,
+                           StageSpec& st) {
   const YAML::Node node = stage.node("interfaces");
   const std::string path = stage.path("interfaces");
   Diagnostics& diag = stage.diag();
@@ -22,7 +22,6 @@ void read_stage_interfaces(const YamlMap& stage, const std::vector<InterfaceSpec
   std::vector<std::string> names;
   for (const InterfaceSpec& f : interfaces)
     names.push_back(f.name);
-  const auto& laws = contact::interface_laws();
   for (const auto& kv : node) {
     const std::string name = kv.first.Scalar();
     const std::string entry_path = join_path(path, name);

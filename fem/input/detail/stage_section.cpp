@@ -147,7 +147,8 @@ void read_control(const YamlMap& m, StageSpec& st) {
 } // namespace
 
 std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinematics,
-                                   const std::vector<InterfaceSpec>& interfaces) {
+                                   const std::vector<InterfaceSpec>& interfaces,
+                                   const SchemaIndex& laws) {
   std::vector<StageSpec> out;
   const std::string expected = "expected a non-empty list of stages";
   if (top.node("stages").IsSequence() && top.node("stages").size() == 0)
@@ -182,7 +183,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("rigid_bodies")) read_stage_rigid_bodies(m, kinematics, st);
     if (m.has("obstacle_displacements"))
       read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
-    if (m.has("interfaces")) read_stage_interfaces(m, interfaces, active, st);
+    if (m.has("interfaces")) read_stage_interfaces(m, interfaces, laws, active, st);
     if (m.has("control")) read_control(m, st);
     if (m.reals("output_at", st.output_at) && m.has("output_at")) {
       for (std::size_t k = 0; k < st.output_at.size(); ++k) {

@@ -29,7 +29,7 @@ ParameterSet rccm_params() {
 /// The message of the InputError thrown by creating `name` with `params` ("" if none).
 std::string creation_error(const std::string& name, const ParameterSet& params) {
   try {
-    interface_laws().create(name, params);
+    builtin_interface_laws().create(name, params);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -41,13 +41,13 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 TEST(InterfaceLawRegistry, Names) {
-  EXPECT_EQ(interface_laws().names(),
+  EXPECT_EQ(builtin_interface_laws().names(),
             (std::vector<std::string>{"coulomb_signorini", "perfect_bonding", "rccm"}));
-  EXPECT_EQ(interface_laws().what(), "interface law");
+  EXPECT_EQ(builtin_interface_laws().what(), "interface law");
 }
 
 TEST(InterfaceLawRegistry, CreatesEachLawWithDefaults) {
-  const auto rccm = interface_laws().create("rccm", rccm_params());
+  const auto rccm = builtin_interface_laws().create("rccm", rccm_params());
   EXPECT_EQ(rccm->name(), "rccm");
   EXPECT_FALSE(rccm->is_tied());
   EXPECT_EQ(rccm->initial_adhesion(), 1.0);  // default β0
@@ -57,13 +57,13 @@ TEST(InterfaceLawRegistry, CreatesEachLawWithDefaults) {
   EXPECT_EQ(r.adhesion_viscosity(), 0.0); // default: quasi-static
   EXPECT_EQ(r.tangential_stiffness(), 5.0e5);
 
-  const auto cs = interface_laws().create("coulomb_signorini", ParameterSet{});
+  const auto cs = builtin_interface_laws().create("coulomb_signorini", ParameterSet{});
   EXPECT_EQ(cs->name(), "coulomb_signorini");
   EXPECT_EQ(cs->friction_coefficient(0.0), 0.0); // default: frictionless
   EXPECT_EQ(cs->initial_adhesion(), 0.0);
   EXPECT_EQ(cs->stiffness_scale(), 0.0);
 
-  const auto tied = interface_laws().create("perfect_bonding", ParameterSet{});
+  const auto tied = builtin_interface_laws().create("perfect_bonding", ParameterSet{});
   EXPECT_EQ(tied->name(), "perfect_bonding");
   EXPECT_TRUE(tied->is_tied());
   // On split pairs (bonded in some stages only) a tied law is the equality multiplier of
@@ -154,8 +154,8 @@ std::string read_doc(const std::string& name) {
 }
 
 TEST(InterfaceLawRegistry, DocsTablesMatchSchemas) {
-  for (const auto& name : interface_laws().names()) {
-    const std::string table = interface_laws().schema(name).markdown_table();
+  for (const auto& name : builtin_interface_laws().names()) {
+    const std::string table = builtin_interface_laws().schema(name).markdown_table();
     EXPECT_TRUE(contains(read_doc(name), table)) << "docs/laws/" << name << ".md must contain:\n"
                                                  << table;
   }

@@ -28,7 +28,7 @@ TEST(OutputCheckpoint, StepsAndEveryAreReadAsGiven) {
   const ProblemSpec spec = read_problem_text(
       with_output("output: {checkpoint: {after: [pull], steps: [{stage: pull, step: 3}], "
                   "every: 2}}\n"),
-      "in.yaml");
+      "in.yaml", builtin_catalogue());
   ASSERT_EQ(spec.output.checkpoint_steps.size(), 1u);
   EXPECT_EQ(spec.output.checkpoint_steps[0].stage, "pull");
   EXPECT_EQ(spec.output.checkpoint_steps[0].step, 3);

@@ -21,9 +21,9 @@ std::string read(const std::string& path) {
 TEST(DocsTablesMatchSchemas, InputReference) {
   const std::string doc = read(BIPOT_SOURCE_DIR "/docs/input_reference.md");
   ASSERT_FALSE(doc.empty());
-  for (const auto& name : materials().names()) {
+  for (const auto& name : builtin_materials().names()) {
     EXPECT_NE(doc.find("### `" + name + "`"), std::string::npos) << name;
-    EXPECT_NE(doc.find(materials().schema(name).markdown_table()), std::string::npos)
+    EXPECT_NE(doc.find(builtin_materials().schema(name).markdown_table()), std::string::npos)
         << "docs/input_reference.md: paste `bipot describe --markdown " << name << "`";
   }
   EXPECT_NE(doc.find(LinearSolver::schema().markdown_table()), std::string::npos)

@@ -1,5 +1,6 @@
 // A prescribed displacement step larger than the model (small strain) is a warning naming the
 // stage, the condition and both lengths; steps up to the model's size are not.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 #include "fem/input/increment_checks.hpp"
@@ -22,7 +23,8 @@ std::string block(const std::string& stages) {
 }
 
 std::vector<std::string> warnings_of(const std::string& text) {
-  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   return large_increment_warnings(model.spec, model.mesh);
 }
 

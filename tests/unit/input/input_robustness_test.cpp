@@ -1,6 +1,7 @@
 // No silent acceptance: what yaml-cpp or a narrowing conversion would let through unnoticed
 // (a key given twice, an integer that wraps, a component the kinematics lacks, two values for
 // one DOF, two outputs with one name, an endless input file) is an error at its line.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 #include "fem/input/condition_checks.hpp"
@@ -38,20 +39,20 @@ TEST(InputRobustness, ThePlaneStrainInputIsValid) {
 
 TEST(InputRobustness, OnlyBoundedRegularFilesAreRead) {
   try {
-    read_problem_file("/dev/zero");
+    read_problem_file("/dev/zero", bipot::builtin_catalogue());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "/dev/zero: is a character device, not an input file (a "
                                      "regular YAML file is expected)");
   }
   const auto dir = std::filesystem::temp_directory_path();
-  EXPECT_THROW(read_problem_file(dir.string()), InputError);
+  EXPECT_THROW(read_problem_file(dir.string(), bipot::builtin_catalogue()), InputError);
   // One byte over 64 MiB (sparse: nothing is written but the size).
   const auto big = dir / "bipot_input_too_large.yaml";
   std::ofstream(big).close();
   std::filesystem::resize_file(big, (std::size_t(64) << 20) + 1);
   try {
-    read_problem_file(big.string());
+    read_problem_file(big.string(), bipot::builtin_catalogue());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -100,7 +101,8 @@ TEST(InputRobustness, AbsurdSizesAreRefused) {
   EXPECT_TRUE(reports(plane, "increments: 2", "increments: 2000000000",
                       "in.yaml:13:17: stages[0].increments: value 2000000000 is out of range [1, "
                       "1000000]"));
-  EXPECT_NO_THROW(read_problem_text(replace(plane, "increments: 2", "increments: 1000000"), "a"));
+  EXPECT_NO_THROW(read_problem_text(replace(plane, "increments: 2", "increments: 1000000"), "a",
+                                    bipot::builtin_catalogue()));
   // 4e16 cells: refused while reading, before any memory is allocated for them.
   const std::string huge = replace(plane, "cells: [2, 2]}", "cells: [100000000, 100000000]}");
   EXPECT_TRUE(reports(huge, "cells: [2]}", "cells: [200000000]}",
@@ -109,11 +111,11 @@ TEST(InputRobustness, AbsurdSizesAreRefused) {
   // 1.0001e8 quads are accepted; as triangles they count twice, holes not at all.
   const std::string edge = replace(replace(plane, "cells: [2, 2]}", "cells: [5000, 5000]}"),
                                    "cells: [2]}", "cells: [10001]}");
-  EXPECT_NO_THROW(read_problem_text(edge, "in.yaml"));
+  EXPECT_NO_THROW(read_problem_text(edge, "in.yaml", bipot::builtin_catalogue()));
   const std::string triangles = replace(edge, "cell: quad4", "cell: tri3");
-  EXPECT_THROW(read_problem_text(triangles, "in.yaml"), InputError);
-  EXPECT_NO_THROW(
-      read_problem_text(replace(triangles, "[left, right]", "[left, \"\"]"), "in.yaml"));
+  EXPECT_THROW(read_problem_text(triangles, "in.yaml", bipot::builtin_catalogue()), InputError);
+  EXPECT_NO_THROW(read_problem_text(replace(triangles, "[left, right]", "[left, \"\"]"), "in.yaml",
+                                    bipot::builtin_catalogue()));
 }
 
 TEST(InputRobustness, ComponentsOfTheKinematics) {
@@ -127,7 +129,7 @@ TEST(InputRobustness, ComponentsOfTheKinematics) {
   EXPECT_TRUE(problems_of(axi).empty());
   const std::string rz =
       replace(replace(axi, "component: x", "component: r"), "component: y", "component: z");
-  const ProblemSpec spec = read_problem_text(rz, "in.yaml");
+  const ProblemSpec spec = read_problem_text(rz, "in.yaml", bipot::builtin_catalogue());
   EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1);
   EXPECT_EQ(spec.stages[0].boundary_conditions[1].component, 0);
   EXPECT_TRUE(reports(axi, "component: x", "component: w",
@@ -154,7 +156,8 @@ TEST(InputRobustness, TwoSetsSharingANodeFixedDifferently) {
   const std::string text = replace(plane, "      - {set: bottom, component: y, value: 0}\n",
                                    "      - {set: bottom, component: y, value: 0}\n"
                                    "      - {set: bottom, component: x, value: 1.0e-3}\n");
-  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   const auto p = conflicting_conditions(model.spec, model.mesh);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_TRUE(has(p, "in.yaml:17:15: stages[0].boundary_conditions[2].set: node 0 at (0, 0) of "
@@ -162,7 +165,9 @@ TEST(InputRobustness, TwoSetsSharingANodeFixedDifferently) {
                      "stages[0].boundary_conditions[1].set) fixes its component x to 0.001 in "
                      "the same stage, this one to 0"));
   // Equal values on the shared node are consistent.
-  const Model same = build_model(read_problem_text(replace(text, "1.0e-3", "0"), "in.yaml"));
+  const Model same = build_model(
+      read_problem_text(replace(text, "1.0e-3", "0"), "in.yaml", bipot::builtin_catalogue()),
+      bipot::builtin_catalogue());
   EXPECT_TRUE(conflicting_conditions(same.spec, same.mesh).empty());
 }
 

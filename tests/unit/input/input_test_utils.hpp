@@ -1,5 +1,6 @@
 #pragma once
 // Helpers of the input tests: the problems an input text produces, and text edits.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -14,7 +15,8 @@ namespace bipot {
 /// The problems reported while reading `text` and building its model (none if it is valid).
 inline std::vector<std::string> problems_of(const std::string& text) {
   try {
-    build_model(read_problem_text(text, "in.yaml"));
+    build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                bipot::builtin_catalogue());
   } catch (const InputError& e) {
     return e.problems();
   }

@@ -1,4 +1,5 @@
 // Input errors of rigid obstacles, each at its place (file:line:col: key.path: message).
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "input_test_utils.hpp"
 
 #include "apps/common/checked_model.hpp"
@@ -103,7 +104,8 @@ TEST(ObstacleInput, FreeBodiesBesideObstacles) {
                                     "");
   const auto check = [](const std::string& text) -> std::string {
     try {
-      app::checked_model(read_problem_text(text, "in.yaml"));
+      app::checked_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                         bipot::builtin_catalogue());
     } catch (const InputError& e) {
       return e.what();
     }
@@ -124,7 +126,8 @@ TEST(ObstacleInput, ConditionOnANodeHeldByABondedObstacle) {
                                    "      - {set: left, component: x, value: 0}\n");
   std::string message;
   try {
-    app::checked_model(read_problem_text(text, "in.yaml"));
+    app::checked_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                       bipot::builtin_catalogue());
   } catch (const InputError& e) {
     message = e.what();
   }

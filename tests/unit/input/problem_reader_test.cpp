@@ -1,4 +1,5 @@
 // Bad input is reported in one pass, each problem as file:line:col: key.path: message.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 namespace bipot {
@@ -22,7 +23,7 @@ const std::string good =
     "      - {type: pressure, set: top, value: 10}\n";                              // 15
 
 TEST(ProblemReader, GoodInputParses) {
-  const ProblemSpec spec = read_problem_text(good, "in.yaml");
+  const ProblemSpec spec = read_problem_text(good, "in.yaml", bipot::builtin_catalogue());
   EXPECT_EQ(spec.kinematics, "axisymmetric");
   ASSERT_EQ(spec.stages.size(), 1u);
   EXPECT_EQ(spec.stages[0].boundary_conditions[0].component, 1);    // z is the axial component
@@ -72,12 +73,14 @@ TEST(ProblemReader, BlockDiagonalsAreValidated) {
     const std::string text =
         replace(tri, "    x:", std::string("    diagonals: ") + d + "\n    x:");
     EXPECT_TRUE(problems_of(text).empty()) << d;
-    EXPECT_EQ(read_problem_text(text, "in.yaml").mesh.diagonals, d);
+    EXPECT_EQ(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()).mesh.diagonals, d);
   }
-  EXPECT_EQ(read_problem_text(tri, "in.yaml").mesh.diagonals, "right"); // default
+  EXPECT_EQ(read_problem_text(tri, "in.yaml", bipot::builtin_catalogue()).mesh.diagonals,
+            "right"); // default
   // Crossed: 4 triangles per quad of the 2 x 2 grid.
   EXPECT_EQ(build_model(read_problem_text(replace(tri, "    x:", "    diagonals: crossed\n    x:"),
-                                          "in.yaml"))
+                                          "in.yaml", bipot::builtin_catalogue()),
+                        bipot::builtin_catalogue())
                 .mesh.num_cells(),
             16);
   EXPECT_TRUE(reports(tri, "    x:", "    diagonals: diagonal\n    x:",
@@ -125,7 +128,7 @@ TEST(ProblemReader, MeshDependentChecksKeepTheUsersLine) {
 
 TEST(ProblemReader, SyntaxErrorHasLineAndColumn) {
   try {
-    read_problem_text("mesh: {blocks: [1, 2\nstages: []\n", "bad.yaml");
+    read_problem_text("mesh: {blocks: [1, 2\nstages: []\n", "bad.yaml", bipot::builtin_catalogue());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.yaml:"), std::string::npos);
@@ -135,7 +138,7 @@ TEST(ProblemReader, SyntaxErrorHasLineAndColumn) {
 
 TEST(ProblemReader, MissingFileIsNamed) {
   try {
-    read_problem_file("/nonexistent/model.yaml");
+    read_problem_file("/nonexistent/model.yaml", bipot::builtin_catalogue());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "/nonexistent/model.yaml: cannot open the input file");
@@ -241,7 +244,8 @@ TEST(BoxSets, SelectNodesInsideAndReportEmptyBoxes) {
                                    "    regions: [soil]\n  sets:\n"
                                    "    axis_top: {min: [0, 1], max: [0, 1]}\n"
                                    "    mid_column: {min: [0.4, -1], max: [0.6, 2]}\n");
-  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   // 2 x 2 cells on [0, 1]^2: one node at (0, 1), three on x = 0.5.
   ASSERT_EQ(model.mesh.node_sets.at("axis_top").size(), 1u);
   const auto& x = model.mesh.nodes[model.mesh.node_sets.at("axis_top")[0]];
@@ -277,7 +281,8 @@ TEST(BoxSets, RegionKeepsOneSideOfAnInterface) {
                            "    seam: {min: [1, 0], max: [1, 1]}\n";
   const std::string text = replace(with_interface(iface), "    regions: [left, middle, right]\n",
                                    "    regions: [left, middle, right]\n" + sets);
-  const Model model = build_model(read_problem_text(text, "in.yaml"));
+  const Model model = build_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                                  bipot::builtin_catalogue());
   // Two nodes on x = 1; the split gives the middle region copies: 2 + 2 in the plain set.
   const auto& left = model.mesh.node_sets.at("seam_left");
   const auto& middle = model.mesh.node_sets.at("seam_middle");

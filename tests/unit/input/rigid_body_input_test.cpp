@@ -1,5 +1,6 @@
 // Input errors of rigid bodies, each at its place, and the supports check with reference
 // nodes.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "input_test_utils.hpp"
 
 #include "apps/common/checked_model.hpp"
@@ -29,7 +30,8 @@ const std::string base =
 
 std::string check(const std::string& text) {
   try {
-    app::checked_model(read_problem_text(text, "in.yaml"));
+    app::checked_model(read_problem_text(text, "in.yaml", bipot::builtin_catalogue()),
+                       bipot::builtin_catalogue());
   } catch (const InputError& e) {
     return e.what();
   }

@@ -1,6 +1,7 @@
 // A stage's `interfaces:` (law or parameter changes): validated against the law's schema at
 // the user's line, unknown interface names with the nearest one, and the resolved set (the
 // parameters in force) carried from stage to stage.
+#include "apps/catalogue/builtin_catalogue.hpp"
 #include "tests/unit/input/input_test_utils.hpp"
 
 namespace bipot {
@@ -23,7 +24,7 @@ TEST(StageInterfaces, ParametersMergeOverThoseInForceAndANewLawStartsFromItsDefa
                  "tangential_stiffness: 1.0e6, decohesion_energy: 0.01}}}\n"
                  "  - name: c\n    interfaces: {joint: {parameters: {friction_coefficient: "
                  "0.5}}}\n"),
-      "in.yaml");
+      "in.yaml", bipot::builtin_catalogue());
   ASSERT_EQ(spec.stages.size(), 3u);
   EXPECT_TRUE(spec.stages[0].interface_laws.empty());
   ASSERT_EQ(spec.stages[1].interface_laws.size(), 1u);
@@ -79,8 +80,8 @@ TEST(OutputCheckpoint, NamesStagesWithTheNearestOnATypo) {
   const std::string text = two_stages("output: {checkpoint: {after: [a, bb]}}\n");
   EXPECT_TRUE(has(problems_of(text), "in.yaml:19:30: output.checkpoint.after: no stage named "
                                      "'bb' (did you mean 'b'?); stages: a, b"));
-  const ProblemSpec spec =
-      read_problem_text(two_stages("output: {checkpoint: {after: [b]}}\n"), "in.yaml");
+  const ProblemSpec spec = read_problem_text(two_stages("output: {checkpoint: {after: [b]}}\n"),
+                                             "in.yaml", bipot::builtin_catalogue());
   EXPECT_EQ(spec.output.checkpoint_after, std::vector<std::string>{"b"});
 }
 

@@ -107,7 +107,7 @@ TEST(DruckerPrager, MatchIsOneOfThree) {
   p.set("dilatancy_angle", 40.0);
   p.set("match", std::string("plane_stress"));
   try {
-    materials().create("drucker_prager", p);
+    builtin_materials().create("drucker_prager", p);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -118,7 +118,7 @@ TEST(DruckerPrager, MatchIsOneOfThree) {
   }
   p.set("match", std::string("plane_strain"));
   try {
-    materials().create("drucker_prager", p);
+    builtin_materials().create("drucker_prager", p);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("drucker_prager.dilatancy_angle: value 40 deg exceeds "

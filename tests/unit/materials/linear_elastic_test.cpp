@@ -75,7 +75,7 @@ TEST(MaterialRegistry, CreatesLinearElasticWithDefaults) {
   ParameterSet p;
   p.set("youngs_modulus", 3.0e6);
   p.set("poissons_ratio", 0.3);
-  auto m = materials().create("linear_elastic", p);
+  auto m = builtin_materials().create("linear_elastic", p);
   EXPECT_EQ(m->name(), "linear_elastic");
   EXPECT_EQ(m->unit_weight(), 0.0);
 }
@@ -86,7 +86,7 @@ TEST(MaterialRegistry, OutOfRangeAndUnknownMessages) {
   p.set("poissons_ratio", 0.5);
   p.set("youngs_modulos", 1.0);
   try {
-    materials().create("linear_elastic", p);
+    builtin_materials().create("linear_elastic", p);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -103,7 +103,7 @@ TEST(MaterialRegistry, OutOfRangeAndUnknownMessages) {
     EXPECT_EQ(e.problems().size(), 3u);
   }
   try {
-    materials().create("linear_elastc", ParameterSet{});
+    builtin_materials().create("linear_elastc", ParameterSet{});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(

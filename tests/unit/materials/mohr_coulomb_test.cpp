@@ -173,7 +173,7 @@ TEST(MohrCoulomb, HugeCohesionEqualsLinearElastic) {
 
 std::string create_error(const std::string& name, ParameterSet p) {
   try {
-    materials().create(name, std::move(p));
+    builtin_materials().create(name, std::move(p));
   } catch (const InputError& e) {
     return e.what();
   }

@@ -79,7 +79,7 @@ TEST(Tresca, ZeroCohesionIsRejected) {
   p.set("poissons_ratio", nu);
   p.set("cohesion", 0.0);
   try {
-    materials().create("tresca", p);
+    builtin_materials().create("tresca", p);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("tresca.cohesion: value 0 is out of range (0, inf) kPa"),

@@ -124,7 +124,7 @@ TEST(VonMises, RegistryCreatesItAndRejectsZeroYieldStress) {
   p.set("poissons_ratio", nu);
   p.set("yield_stress", 0.0);
   try {
-    materials().create("von_mises", p);
+    builtin_materials().create("von_mises", p);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("von_mises.yield_stress: value 0 is out of range"),
@@ -132,7 +132,8 @@ TEST(VonMises, RegistryCreatesItAndRejectsZeroYieldStress) {
         << e.what();
   }
   p.set("yield_stress", sy);
-  EXPECT_EQ(materials().create("von_mises", p)->num_state_variables(), ElastoPlastic::state_size);
+  EXPECT_EQ(builtin_materials().create("von_mises", p)->num_state_variables(),
+            ElastoPlastic::state_size);
 }
 
 } // namespace
