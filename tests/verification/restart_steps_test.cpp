@@ -6,8 +6,10 @@
 // uninterrupted run made after the checkpoint (counted from its reports). The model carries
 // every kind of mid-stage state: a von Mises block (plastic strains), RCCM adhesion β, a law
 // change by the last stage (ρ kept), and a checkpoint taken while an earlier cut-back still
-// shortens the increments (cut-back level > 0).
+// shortens the increments (cut-back level > 0). The last checkpoint also restarts at another
+// rank count through its file.
 #include "apps/catalogue/builtin_catalogue.hpp"
+#include "fem/analysis/checkpoint.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -175,6 +178,21 @@ TEST(RestartWithinStage, ContinuesLikeTheUninterruptedRunFromEveryPlannedStep) {
     restarted.load_state(s.state);
     expect_continues(whole, record(restarted), s.increments,
                      "restart at " + s.what + " on " + std::to_string(mpi_size()) + " ranks");
+  }
+
+  // Across rank counts, through a file as the apps do: the last checkpoint (cut-back level 1)
+  // is written here, and the one another rank count wrote (BIPOT_RESTART_FROM; CTest runs
+  // 1 -> 2 and 2 -> 1) continues at this one.
+  const std::uint64_t hash = input_hash(model.spec, input);
+  if (mpi_rank() == 0)
+    write_checkpoint("restart_steps_np" + std::to_string(mpi_size()) + ".ckp", hash,
+                     saved.back().state);
+  barrier();
+  if (const char* other = std::getenv("BIPOT_RESTART_FROM")) {
+    StaticAnalysis across(model);
+    across.load_state(read_checkpoint(other, hash));
+    expect_continues(whole, record(across), saved.back().increments,
+                     std::string("restart from ") + other);
   }
 }
 
