@@ -185,7 +185,7 @@ TEST(RestartWithinStage, ContinuesLikeTheUninterruptedRunFromEveryPlannedStep) {
   // 1 -> 2 and 2 -> 1) continues at this one.
   const std::uint64_t hash = input_hash(model.spec, input);
   if (mpi_rank() == 0)
-    write_checkpoint("restart_steps_np" + std::to_string(mpi_size()) + ".ckp", hash,
+    write_checkpoint("restart_steps_test_np" + std::to_string(mpi_size()) + ".ckp", hash,
                      saved.back().state);
   barrier();
   if (const char* other = std::getenv("BIPOT_RESTART_FROM")) {
