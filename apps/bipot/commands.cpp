@@ -104,8 +104,8 @@ int run_command(const std::vector<std::string>& args, const Catalogue& catalogue
                    "  Prints one progress line per converged increment unless --quiet.\n"
                    "  --restart continues from a checkpoint (output.checkpoint) of the same "
                    "input,\n"
-                   "  after the stage it was written at; DIR starts with the results up to "
-                   "there,\n"
+                   "  where it was written (a stage end or a step within a stage); DIR starts "
+                   "with the results up to there,\n"
                    "  copied from the checkpoint's folder.\n";
     return 0;
   }
@@ -141,13 +141,13 @@ int run_command(const std::vector<std::string>& args, const Catalogue& catalogue
       const StaticAnalysis* running = nullptr;
       AnalysisOptions options;
       options.on_stage_end = checkpoint_writer(model, &running, folder.working());
+      options.on_increment_end = step_checkpoint_writer(model, &running, folder.working());
       StaticAnalysis analysis(model, options, &writer);
       running = &analysis;
       if (!restart.empty()) {
-        const std::size_t done = restore(restart, restored, analysis, writer, model);
+        const RestartPoint at = restore(restart, restored, analysis, writer, model);
         if (root() && !quiet)
-          std::cout << "bipot: restart from " << restart << " after stage '"
-                    << model.spec.stages[done - 1].name << "'\n";
+          std::cout << "bipot: restart from " << restart << " " << at.text << "\n";
       }
       if (root() && !quiet)
         std::cout << "bipot: " << file << ": " << model.mesh.num_nodes() << " nodes, "

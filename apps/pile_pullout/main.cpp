@@ -4,6 +4,7 @@
 #include "apps/catalogue/builtin_catalogue.hpp"
 #include "apps/common/app_support.hpp"
 #include "apps/common/checked_model.hpp"
+#include "apps/common/checkpoints.hpp"
 #include "apps/common/run_folder.hpp"
 #include "apps/common/step_text.hpp"
 #include "apps/pile_pullout/pile_input.hpp"
@@ -31,13 +32,16 @@ void usage() {
   std::cout
       << "pile_pullout - pull-out of a pile from soil with an adhesive/frictional interface\n\n"
          "usage:\n"
-         "  pile_pullout run FILE.yaml [--output DIR] [--quiet] [--no-plot]\n"
+         "  pile_pullout run FILE.yaml [--output DIR] [--restart CHECKPOINT] [--quiet]\n"
+         "        [--no-plot]\n"
          "        geostatic, installation and pull-out stages; writes DIR (default: the file's\n"
          "        output.directory) with head_force.csv, profiles.csv, solution.pvd,\n"
          "        interface_shaft.pvd, interface_toe.pvd, status.txt and, with\n"
          "        python3-matplotlib, pullout_curve.png and profiles.png. DIR is replaced\n"
          "        only when the run finishes: a failed run leaves it as it was and its\n"
-         "        converged steps in DIR.failed\n"
+         "        converged steps in DIR.failed. --restart continues from a checkpoint\n"
+         "        (output.checkpoint) of the same input, where it was written; DIR starts\n"
+         "        with the results up to there, copied from the checkpoint's folder\n"
          "  pile_pullout check FILE.yaml     validate the file, build and check the model\n"
          "  pile_pullout describe [--markdown]   the input file's keys\n\n"
          "Run in parallel with: mpiexec -n N pile_pullout run FILE.yaml\n"
@@ -66,16 +70,33 @@ void plot(const std::string& dir, const std::string& label) {
                 << "\n";
 }
 
-int run(const std::string& file, const std::string& output, bool quiet, bool plots) {
+int run(const std::string& file, const std::string& output, const std::string& restart, bool quiet,
+        bool plots) {
   const Catalogue catalogue = builtin_catalogue();
   pile::PileSpec spec = pile::read_pile_file(file, catalogue);
   if (!output.empty()) spec.output.directory = output;
   const Model model = app::checked_model(pile::make_problem(spec), catalogue);
   const bool root = mpi_rank() == 0;
+  // A checkpoint of another input is refused before the results folder is touched.
+  const StateArrays restored = restart.empty() ? StateArrays{} : app::read_restart(restart, model);
   app::RunFolder folder(spec.output.directory, model.spec, "pile_pullout");
   ResultWriter writer(model, mpi_rank(), mpi_size(), folder.working());
   pile::PileResults results(model, folder.working(), spec.profiles_at_mm, root);
-  StaticAnalysis analysis(model, {}, &writer);
+  // Checkpoints carry the head curve's and profiles' own state too.
+  const StaticAnalysis* running = nullptr;
+  const app::AppState pile_state = [&results] { return results.save_state(); };
+  AnalysisOptions options;
+  options.on_stage_end = app::checkpoint_writer(model, &running, folder.working(), pile_state);
+  options.on_increment_end =
+      app::step_checkpoint_writer(model, &running, folder.working(), pile_state);
+  StaticAnalysis analysis(model, options, &writer);
+  running = &analysis;
+  if (!restart.empty()) {
+    const app::RestartPoint at = app::restore(restart, restored, analysis, writer, model);
+    results.resume(at.folder, at.global_steps, restored);
+    if (root && !quiet)
+      std::printf("pile_pullout: restart from %s %s\n", restart.c_str(), at.text.c_str());
+  }
   if (root && !quiet)
     std::printf("pile_pullout: %s: %s interface, %lld nodes, %lld cells, %lld DOFs, %d rank%s\n",
                 file.c_str(), spec.law.c_str(), static_cast<long long>(model.mesh.num_nodes()),
@@ -134,7 +155,7 @@ int main(int argc, char** argv) {
     if (root) usage();
     return 1;
   }
-  std::string command = args[0], output;
+  std::string command = args[0], output, restart;
   bool quiet = false, plots = true, markdown = false;
   std::vector<std::string> files;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -149,6 +170,8 @@ int main(int argc, char** argv) {
       markdown = true;
     else if (a == "--output" && i + 1 < args.size())
       output = args[++i];
+    else if (a == "--restart" && i + 1 < args.size())
+      restart = args[++i];
     else if (!a.empty() && a[0] == '-') {
       if (root) std::cerr << "pile_pullout: unknown option '" << a << "' (see --help)\n";
       return 1;
@@ -183,5 +206,5 @@ int main(int argc, char** argv) {
                   << model.mesh.num_cells() << " cells)\n";
       return 0;
     });
-  return guarded([&] { return run(files[0], output, quiet, plots); });
+  return guarded([&] { return run(files[0], output, restart, quiet, plots); });
 }

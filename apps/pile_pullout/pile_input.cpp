@@ -203,7 +203,8 @@ void read_stages(const YamlMap& top, PileSpec& spec) {
 void read_output(const YamlMap& top, PileSpec& spec) {
   spec.output.directory = "results/pile_pullout";
   if (!top.has("output")) return;
-  YamlMap m(top.node("output"), "output", top.diag(), {"directory", "vtk", "every", "profiles_at"});
+  YamlMap m(top.node("output"), "output", top.diag(),
+            {"directory", "vtk", "every", "profiles_at", "checkpoint"});
   if (!m.valid()) return;
   if (m.string("directory", spec.output.directory)) spec.output.where = m.where("directory");
   m.boolean("vtk", spec.output.vtk);
@@ -215,6 +216,9 @@ void read_output(const YamlMap& top, PileSpec& spec) {
                     [](double v) { return !(v > 0); }))
       m.error("profiles_at", "expected increasing head displacements > 0 (mm)");
   }
+  // As in bipot input files; the stage names are geostatic, installation and pullout
+  // (checked with the stages by make_problem).
+  input::read_checkpoint(m, spec.output);
 }
 
 PileSpec parse(const std::string& text, const std::string& file_name,
@@ -268,7 +272,9 @@ std::string describe_pile_input(bool markdown) {
           "  interface: {law: rccm | coulomb_signorini | perfect_bonding, parameters: {...}}\n"
           "  linear_solver, contact_solver: as in bipot input files (bipot describe NAME)\n"
           "  stages: {geostatic: {...}, installation: {...}, pullout: {...}}, see below\n"
-          "  output: {directory, vtk, every, profiles_at: [head displacements, mm]}\n\n";
+          "  output: {directory, vtk, every, profiles_at: [head displacements, mm],\n"
+          "           checkpoint: {after: [stages], steps: [{stage, step}], every: n}}\n"
+          "          (stages geostatic, installation, pullout; see `bipot describe input`)\n\n";
   for (const ParamSchema& s : {geometry_schema(), mesh_schema(), geostatic_schema(),
                                installation_schema(), pullout_schema()})
     os << (markdown ? "### `" + s.name() + "`\n\n" + s.doc() + "\n\n" + s.markdown_table() + "\n"

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 
 namespace bipot::pile {
@@ -99,6 +100,48 @@ void PileResults::write_profile(const StepReport& report, const StaticAnalysis& 
     profiles_ << line;
   }
   profiles_.flush();
+}
+
+} // namespace bipot::pile
+
+namespace bipot::pile {
+
+namespace {
+
+// Appends the data rows of `from` whose first value (the global step) is at most `steps`;
+// its header must be `to`'s (written by the constructor).
+void copy_rows(const std::string& from, std::ofstream& to, int steps) {
+  std::ifstream in(from);
+  if (!in) throw Error("cannot read '" + from + "' to continue its rows after the restart");
+  std::string line;
+  std::getline(in, line); // the header, already written
+  while (std::getline(in, line))
+    if (!line.empty() && std::atoi(line.c_str()) <= steps) to << line << '\n';
+  to.flush();
+  if (!to) throw Error("cannot write the pile results copied from '" + from + "'");
+}
+
+} // namespace
+
+StateArrays PileResults::save_state() const {
+  return {{"app.pile_results",
+           {static_cast<double>(next_profile_), peak_force_, peak_displacement_, last_.displacement,
+            last_.force}}};
+}
+
+void PileResults::resume(const std::string& from, int steps, const StateArrays& state) {
+  const auto it = state.find("app.pile_results");
+  if (it == state.end() || it->second.size() != 5)
+    throw InputError(from + ": the checkpoint holds no pile_pullout results state (written by "
+                            "another program?)");
+  const std::vector<double>& v = it->second;
+  next_profile_ = static_cast<std::size_t>(v[0]);
+  peak_force_ = v[1];
+  peak_displacement_ = v[2];
+  last_ = {v[3], v[4]};
+  if (!write_) return;
+  copy_rows(from + "/head_force.csv", head_, steps);
+  copy_rows(from + "/profiles.csv", profiles_, steps);
 }
 
 } // namespace bipot::pile

@@ -5,6 +5,7 @@
 
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
+#include "fem/core/state_arrays.hpp"
 
 #include <fstream>
 #include <string>
@@ -30,6 +31,15 @@ public:
 
   /// Called after every converged increment.
   void record(const StepReport& report, const StaticAnalysis& analysis);
+
+  /// What the curve and profiles need to continue after a restart (the next profile due, the
+  /// peak so far, the last head state), saved with each checkpoint as "app.pile_results".
+  StateArrays save_state() const;
+  /// A restart from a checkpoint in folder `from` written after `steps` increments: copies
+  /// the rows of its head_force.csv and profiles.csv up to there and restores save_state()'s
+  /// values from `state`. Every rank, before the run. Throws bipot::Error if the files cannot
+  /// be read or the state lacks the pile's values (a checkpoint of bipot, not pile_pullout).
+  void resume(const std::string& from, int steps, const StateArrays& state);
 
   std::string head_force_path() const { return directory_ + "/head_force.csv"; }
   std::string profiles_path() const { return directory_ + "/profiles.csv"; }

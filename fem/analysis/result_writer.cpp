@@ -125,15 +125,20 @@ std::string ResultWriter::pvd_path() const {
   return directory_ + "/solution.pvd";
 }
 
-void ResultWriter::resume(const std::string& directory, std::size_t stages_done, double time) {
+void ResultWriter::resume(const std::string& directory, std::size_t stages_done, double time,
+                          int next_stage_steps) {
   const auto last = static_cast<double>(stages_done);
   const auto file_name = [](const std::string& path) {
     return path.substr(path.find_last_of('/') + 1);
   };
-  if (reactions_) reactions_->copy_rows(directory + "/" + file_name(reactions_->path()), last);
+  const auto copy = [&](CsvWriter* csv) {
+    if (csv) csv->copy_rows(directory + "/" + file_name(csv->path()), last, next_stage_steps);
+  };
+  copy(reactions_.get());
   for (const auto& csv : interface_csv_)
-    csv->copy_rows(directory + "/" + file_name(csv->path()), last);
-  if (energy_) energy_->copy_rows(directory + "/" + file_name(energy_->path()), last);
+    copy(csv.get());
+  copy(energy_.get());
+  copy(rigid_bodies_.get());
   if (vtk_) vtk_->resume(directory, time);
   for (const auto& vtk : interface_vtk_)
     if (vtk) vtk->resume(directory, time);

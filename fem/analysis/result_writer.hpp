@@ -29,10 +29,12 @@ public:
   void write_step(const StepReport& report, const StaticAnalysis& analysis);
 
   /// A restart: the results of an earlier run in `directory` (the folder its checkpoint is
-  /// in) up to the end of stage `stages_done` (pseudo-time `time`) are copied first — the CSV
-  /// rows and the VTK steps — so that this run's folder holds the whole series. Every rank,
-  /// before the first write_step(). Throws bipot::Error if they cannot be read.
-  void resume(const std::string& directory, std::size_t stages_done, double time);
+  /// in) up to the end of stage `stages_done` and `next_stage_steps` increments into the next
+  /// (a checkpoint within it), ending at pseudo-time `time`, are copied first — the CSV rows
+  /// and the VTK steps — so that this run's folder holds the whole series. Every rank, before
+  /// the first write_step(). Throws bipot::Error if they cannot be read.
+  void resume(const std::string& directory, std::size_t stages_done, double time,
+              int next_stage_steps = 0);
 
   const std::string& directory() const { return directory_; }
   /// Path of the reactions CSV.

@@ -41,7 +41,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
   summary.steps = start_steps; // a restart numbers its increments on
-  if (first_stage == 0 || !energy) energy = std::make_unique<EnergyLedger>(interfaces);
+  if (!energy || (first_stage == 0 && !resume_point))
+    energy = std::make_unique<EnergyLedger>(interfaces);
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = start_time;
   // Interface resultants (per interface and component) of the last step and the largest
@@ -51,6 +52,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
 
   for (std::size_t s = first_stage; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
+    // A checkpoint within this stage: its laws are in force and ρ restored already.
+    const bool resuming = s == first_stage && resume_point;
     target.clear();
     for (const auto& bc : stage.boundary_conditions)
       for (Index node : set_nodes(bc.set))
@@ -77,16 +80,21 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     // follows the new laws' stiffness.
     bool law_changed = false;
     for (const auto& sl : model.stage_laws)
-      if (sl.stage == s) interfaces[sl.interface]->set_law(*sl.law), law_changed = true;
+      if (sl.stage == s && !resuming)
+        interfaces[sl.interface]->set_law(*sl.law), law_changed = true;
     if (law_changed && has_contact) {
       choose_augmentation();
       schur_ready = false; // K was overwritten by the unconstrained bulk matrix
     }
 
     const double planned = 1.0 / stage.increments;
-    double done = 0.0, last_size = 0.0; // last_size: of the last converged increment
-    std::vector<double> u_before_last;  // u at the start of the last converged increment
-    int level = 0, step = 0;
+    progress = StageProgress{};
+    progress.stage = s;
+    progress.stage_time = time;
+    if (resuming) resume_stage(); // the position and start values a checkpoint saved
+    double &done = progress.done, &last_size = progress.last_size;
+    std::vector<double>& u_before_last = progress.u_before_last;
+    int &level = progress.level, &step = progress.step;
     // An increment's time includes its failed attempts: the clock restarts only when one
     // converges.
     auto step_start = std::chrono::steady_clock::now();
@@ -317,6 +325,9 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         --level; // grow back towards the planned increment
       step_start = std::chrono::steady_clock::now();
       failed_seconds = 0;
+      progress.planned_step = rep.planned_step;
+      progress.step_time = rep.time;
+      if (options.on_increment_end) options.on_increment_end(rep);
     }
     F_prev.copy(F_cur);
     gravity_before = gravity_now;
@@ -365,6 +376,10 @@ RunSummary StaticAnalysis::run(const std::function<void(const StepReport&)>& on_
 
 StateArrays StaticAnalysis::save_state(std::size_t stages_done, double time) const {
   return impl_->save_state(stages_done, time);
+}
+
+StateArrays StaticAnalysis::save_step_state() const {
+  return impl_->save_step_state();
 }
 
 void StaticAnalysis::load_state(const StateArrays& state) {

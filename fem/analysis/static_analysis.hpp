@@ -24,6 +24,7 @@
 namespace bipot {
 
 class ResultWriter;
+struct StepReport;
 
 struct AnalysisOptions {
   int max_iterations = 25;          ///< Newton iterations per increment
@@ -31,6 +32,9 @@ struct AnalysisOptions {
   /// Called on every rank at the end of each stage, after its displacement reset, with the
   /// number of stages done and the pseudo-time (s): where save_state() is complete.
   std::function<void(std::size_t stages_done, double time)> on_stage_end;
+  /// Called on every rank after each converged increment, once the stage driver has moved
+  /// past it (after the writer and run()'s on_step): where save_step_state() is complete.
+  std::function<void(const StepReport&)> on_increment_end;
 };
 
 /// What a converged increment reports (progress lines, tests).
@@ -120,10 +124,17 @@ public:
   /// gathered from every rank by global cell, every interface's committed state, the load and
   /// reaction memory and the step count (analysis_state.cpp). The same on every rank.
   StateArrays save_state(std::size_t stages_done, double time) const;
-  /// Restores a save_state() made by the same model at any rank count (every rank, before
-  /// run()); run() then continues with the next stage, as the saved run did. The laws the
-  /// done stages put in force are put in force again. Throws bipot::Error if the arrays do
-  /// not fit this model.
+  /// The complete state within a stage, after the increment AnalysisOptions::on_increment_end
+  /// reports (collective): save_state()'s arrays plus the stage driver's position — load
+  /// factor, step count, cut-back level, the last increment's size and u before it (the
+  /// predictor), the stage's start values of prescribed DOFs, gap shifts and obstacles
+  /// (stage_progress.cpp). Throws bipot::Error in a path-following stage (`control:`), whose
+  /// path state is not saved.
+  StateArrays save_step_state() const;
+  /// Restores a save_state() or save_step_state() made by the same model at any rank count
+  /// (every rank, before run()); run() then continues with the next stage, or within the
+  /// stage, as the saved run did. The laws the stages up to there put in force are put in
+  /// force again. Throws bipot::Error if the arrays do not fit this model.
   void load_state(const StateArrays& state);
 
   /// Total displacement, all DOFs, replicated on every rank.

@@ -86,18 +86,7 @@ ProblemSpec read_root(const YAML::Node& root, Diagnostics& diag, const std::stri
   else
     top.missing("stages", "at least one load stage");
   if (top.has("output")) spec.output = input::read_output(top);
-  // Checkpoints are written at the end of the stages they name.
-  std::vector<std::string> stage_names;
-  for (const auto& st : spec.stages)
-    stage_names.push_back(st.name);
-  for (const auto& name : spec.output.checkpoint_after)
-    if (std::find(stage_names.begin(), stage_names.end(), name) == stage_names.end()) {
-      const std::string near = nearest_name(name, stage_names);
-      diag.error_at(spec.output.checkpoint_where,
-                    "no stage named '" + name + "'" +
-                        (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                        "; stages: " + join_names(stage_names));
-    }
+  input::check_checkpoints(spec, diag);
   input::check_stage_controls(spec, diag);
   return spec;
 }
@@ -126,6 +115,7 @@ ProblemSpec read_problem_text(const std::string& text, const std::string& file_n
 void check_stage_controls(const ProblemSpec& spec) {
   Diagnostics diag(spec.file);
   input::check_stage_controls(spec, diag);
+  input::check_checkpoints(spec, diag);
   if (!diag.problems().empty()) throw InputError(diag.problems());
 }
 

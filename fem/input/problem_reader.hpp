@@ -28,7 +28,8 @@ ProblemSpec read_problem_text(const std::string& text, const std::string& file_n
 
 /// The rules of path-following stages that need the rest of the problem (contact solver,
 /// interfaces, the previous stage), for a ProblemSpec built by an app rather than read from
-/// a bipot file (read_problem_* apply them already). Throws InputError naming each stage.
+/// a bipot file (read_problem_* apply them already), and those of output.checkpoint (stage
+/// names, steps in range). Throws InputError naming each stage.
 void check_stage_controls(const ProblemSpec& spec);
 
 /// The top-level keys and a one-line doc for each, for `bipot describe input` and the docs.

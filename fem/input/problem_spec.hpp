@@ -196,6 +196,25 @@ struct OutputSpec {
   /// the end of these stages (the complete state, for `bipot run --restart`).
   std::vector<std::string> checkpoint_after;
   std::string checkpoint_where;
+  /// `checkpoint: {steps: [{stage, step}]}`: write `checkpoint_<stage>_step<k>.bin` when the
+  /// stage reaches its planned load level k/increments (checkpoint_section.cpp).
+  struct CheckpointStep {
+    std::string stage;
+    int step = 0;
+    std::string where, step_where; ///< of its `stage` and `step` keys
+  };
+  std::vector<CheckpointStep> checkpoint_steps;
+  /// `checkpoint: {every: n}`: also at the planned levels n, 2n, … of every ramp stage; 0: not.
+  int checkpoint_every = 0;
+  /// A checkpoint within `stage` at its planned level `k` is asked for (never within a
+  /// path-following stage: `every` skips those, `steps` naming one is refused at `check`).
+  bool checkpoint_at(const StageSpec& stage, int k) const {
+    if (k < 1 || stage.control.path_following()) return false;
+    if (checkpoint_every > 0 && k % checkpoint_every == 0) return true;
+    for (const auto& c : checkpoint_steps)
+      if (c.stage == stage.name && c.step == k) return true;
+    return false;
+  }
 };
 
 struct ProblemSpec {

@@ -51,7 +51,7 @@ void CsvWriter::write_row(const std::vector<double>& values) {
   if (!out_) throw Error("CsvWriter: cannot write to '" + path_ + "'");
 }
 
-void CsvWriter::copy_rows(const std::string& path, double last_stage) {
+void CsvWriter::copy_rows(const std::string& path, double last_stage, int next_stage_steps) {
   std::ifstream in(path);
   if (!in) throw Error("CsvWriter: cannot read '" + path + "' to copy its rows");
   std::string header, line;
@@ -62,8 +62,14 @@ void CsvWriter::copy_rows(const std::string& path, double last_stage) {
   if (header != expected)
     throw Error("CsvWriter: '" + path + "' has the header '" + header + "', expected '" + expected +
                 "'");
-  while (std::getline(in, line))
-    if (!line.empty() && std::strtod(line.c_str(), nullptr) <= last_stage) out_ << line << '\n';
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    char* rest = nullptr;
+    const double stage = std::strtod(line.c_str(), &rest);
+    const double step = *rest == ',' ? std::strtod(rest + 1, nullptr) : 0.0;
+    if (stage <= last_stage || (stage == last_stage + 1 && step <= next_stage_steps))
+      out_ << line << '\n';
+  }
   out_ << std::flush;
   if (!out_) throw Error("CsvWriter: cannot write to '" + path_ + "'");
 }

@@ -22,9 +22,10 @@ public:
   void write_row(const std::vector<double>& values);
 
   /// Appends the rows of an earlier file at `path` with this header whose first value (the
-  /// stage, 1-based) is at most `last_stage`, as they are (a restart's earlier increments).
-  /// Throws bipot::Error if the file cannot be read or its header differs.
-  void copy_rows(const std::string& path, double last_stage);
+  /// stage, 1-based) is at most `last_stage`, or is the next stage with a second value (the
+  /// step within it) of at most `next_stage_steps`, as they are (a restart's earlier
+  /// increments). Throws bipot::Error if the file cannot be read or its header differs.
+  void copy_rows(const std::string& path, double last_stage, int next_stage_steps = 0);
 
   const std::string& path() const { return path_; }
   const std::vector<std::string>& columns() const { return columns_; }

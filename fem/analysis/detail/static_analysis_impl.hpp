@@ -28,6 +28,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace bipot {
@@ -304,6 +305,31 @@ struct StaticAnalysis::Impl {
   double largest_any = 0.0;
   StateArrays save_state(std::size_t stages_done, double time) const;
   void load_state(const StateArrays& state);
+
+  /// The running stage's position: the stage driver's step-size state, kept here (not in
+  /// locals of run()) so that a checkpoint within a stage can save it (stage_progress.cpp).
+  struct StageProgress {
+    std::size_t stage = 0;
+    double stage_time = 0;             ///< pseudo-time at the stage's start
+    double done = 0, last_size = 0;    ///< converged λ; size of the last converged increment
+    std::vector<double> u_before_last; ///< u at the start of the last converged increment
+    int level = 0, step = 0;           ///< cut-back level; converged increments so far
+    int planned_step = 0;              ///< the planned level k the last increment ended on
+    double step_time = 0;              ///< pseudo-time at the end of the last increment
+  };
+  StageProgress progress;
+  /// Loaded from a checkpoint within a stage: the stage's start values, restored by
+  /// resume_stage() once run() has set the stage up.
+  struct ResumePoint {
+    StageProgress progress;
+    std::map<Index, double> start;
+    std::vector<double> gap_start;
+    std::vector<std::array<double, 3>> obstacle_start;
+  };
+  std::optional<ResumePoint> resume_point;
+  StateArrays save_step_state() const;
+  void load_step_state(const StateArrays& state);
+  void resume_stage();
 };
 
 } // namespace bipot

@@ -375,13 +375,7 @@ OutputSpec read_output(const YamlMap& top) {
   m.boolean("vtk", out.vtk);
   if (m.integer("every", out.every) && out.every < 1)
     m.error("every", "value " + std::to_string(out.every) + " is out of range [1, inf)");
-  if (m.has("checkpoint")) {
-    const YamlMap c(m.node("checkpoint"), m.path("checkpoint"), m.diag(), {"after"});
-    out.checkpoint_where = c.where("after");
-    if (c.valid() && c.strings("after", out.checkpoint_after, true) && c.has("after") &&
-        out.checkpoint_after.empty())
-      c.error("after", "expected a non-empty list of stage names");
-  }
+  read_checkpoint(m, out);
   return out;
 }
 

@@ -26,6 +26,11 @@ void read_stage_interfaces(const YamlMap& stage, const std::vector<InterfaceSpec
 /// Cross-section rules of path-following stages (need the contact solver and interfaces).
 void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag);
 OutputSpec read_output(const YamlMap& top);
+/// `output.checkpoint` (checkpoint_section.cpp), read from the `output` map into `out`, and
+/// its checks against the stages: names that exist, steps within a stage's increments, no
+/// step within a path-following stage.
+void read_checkpoint(const YamlMap& output, OutputSpec& out);
+void check_checkpoints(const ProblemSpec& spec, Diagnostics& diag);
 std::vector<InterfaceSpec> read_interfaces(const YamlMap& top, const std::string& kinematics,
                                            const SchemaIndex& laws);
 /// An interface with `obstacle` (obstacle_section.cpp): the obstacle, and the one facet set

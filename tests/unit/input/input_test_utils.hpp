@@ -22,6 +22,19 @@ inline std::vector<std::string> problems_of(const std::string& text) {
   return {};
 }
 
+/// Lines 1-10 of an input: two unit squares side by side, regions `left` and `right`, both
+/// linear elastic.
+inline std::string two_regions_text() {
+  return "kinematics: plane_strain\n"                                                     // 1
+         "mesh:\n  blocks:\n    cell: quad4\n"                                            // 2-4
+         "    x: {breaks: [0, 1, 2], cells: [1, 1]}\n"                                    // 5
+         "    y: {breaks: [0, 1], cells: [1]}\n"                                          // 6
+         "    regions: [left, right]\n"                                                   // 7
+         "materials:\n"                                                                   // 8
+         "  left: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"   // 9
+         "  right: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"; // 10
+}
+
 /// `text` with the first `from` replaced by `to` (which must be there).
 inline std::string replace(std::string text, const std::string& from, const std::string& to) {
   const auto pos = text.find(from);

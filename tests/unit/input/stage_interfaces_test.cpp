@@ -10,18 +10,11 @@ namespace {
 // Two regions side by side with an interface, and two stages; `second` is inserted into the
 // second stage (line 18 on).
 std::string two_stages(const std::string& second) {
-  return "kinematics: plane_strain\n"                                                    // 1
-         "mesh:\n  blocks:\n    cell: quad4\n"                                           // 2-4
-         "    x: {breaks: [0, 1, 2], cells: [1, 1]}\n"                                   // 5
-         "    y: {breaks: [0, 1], cells: [1]}\n"                                         // 6
-         "    regions: [left, right]\n"                                                  // 7
-         "materials:\n"                                                                  // 8
-         "  left: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n"  // 9
-         "  right: {type: linear_elastic, youngs_modulus: 1.0e4, poissons_ratio: 0.3}\n" // 10
-         "interfaces:\n  - name: joint\n    between: [left, right]\n"                    // 11-13
-         "    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}\n"     // 14-15
-         "stages:\n  - name: a\n"                                                        // 16-17
-         "  - name: b\n" +                                                               // 18
+  return two_regions_text() +
+         "interfaces:\n  - name: joint\n    between: [left, right]\n"                // 11-13
+         "    law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}\n" // 14-15
+         "stages:\n  - name: a\n"                                                    // 16-17
+         "  - name: b\n" +                                                           // 18
          second;
 }
 
