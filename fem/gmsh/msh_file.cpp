@@ -217,8 +217,9 @@ private:
       }
     }
     if (file_.node_tags.size() != total)
-      c_.fail("$Nodes: the header announces " + std::to_string(total) + " nodes, the blocks hold " +
-              std::to_string(file_.node_tags.size()));
+      c_.fail_at(c_.mark(), "$Nodes: the header announces " + std::to_string(total) +
+                                " nodes, the blocks hold " +
+                                std::to_string(file_.node_tags.size()));
   }
 
   void elements() {
@@ -268,8 +269,8 @@ private:
       file_.element_blocks.push_back(std::move(block));
     }
     if (read != total)
-      c_.fail("$Elements: the header announces " + std::to_string(total) +
-              " elements, the blocks hold " + std::to_string(read));
+      c_.fail_at(c_.mark(), "$Elements: the header announces " + std::to_string(total) +
+                                " elements, the blocks hold " + std::to_string(read));
   }
 
   Cursor c_;
