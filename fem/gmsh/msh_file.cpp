@@ -5,6 +5,7 @@
 #include "fem/gmsh/msh_element_types.hpp"
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <set>
@@ -147,10 +148,11 @@ private:
         const std::uint64_t np =
             c_.count(named + ": number of physical tags", 0, c_.capacity(1, 4));
         std::vector<int> physicals;
+        std::set<int> seen; // not a scan of `physicals`: np is bounded by the file size only
         for (std::uint64_t p = 0; p < np; ++p) {
           const int phys = int(c_.integer(named + ": physical tag", 1, kMaxTag));
-          for (int q : physicals)
-            if (q == phys) c_.fail(named + ": physical tag " + std::to_string(phys) + " twice");
+          if (!seen.insert(phys).second)
+            c_.fail(named + ": physical tag " + std::to_string(phys) + " twice");
           physicals.push_back(phys);
         }
         if (d > 0) { // bounding entities: not used by bipot, only read
@@ -199,20 +201,30 @@ private:
                                               "most the header's total)",
                                        0, std::min(left, c_.capacity(1 + per, 8 * (1 + per))));
       const std::size_t first = file_.node_tags.size();
+      // Field names made once per block, messages naming a node only on failure: this loop
+      // runs once per node of the mesh.
+      const std::string tag_what = what + ": node tag";
       for (std::uint64_t i = 0; i < n; ++i) {
         const std::size_t tag_at = c_.mark();
-        const std::uint64_t node = c_.count(what + ": node tag", min_tag, max_tag);
+        const std::uint64_t node = c_.count(tag_what, min_tag, max_tag);
         if (!file_.node_of.emplace(node, file_.node_tags.size()).second)
           c_.fail_at(tag_at, what + ": node " + std::to_string(node) + " is defined twice");
         file_.node_tags.push_back(node);
       }
+      const std::string coordinate_what[3] = {what + ": coordinate x", what + ": coordinate y",
+                                              what + ": coordinate z"};
+      const std::string parametric_what = what + ": parametric coordinate";
       for (std::uint64_t i = 0; i < n; ++i) {
-        const std::string node = "$Nodes: node " + std::to_string(file_.node_tags[first + i]);
         std::array<double, 3> x{};
-        for (int k = 0; k < 3; ++k)
-          x[k] = c_.real(node + ": coordinate " + "xyz"[k], true);
+        for (int k = 0; k < 3; ++k) {
+          const std::size_t at = c_.mark();
+          x[k] = c_.real(coordinate_what[k], false);
+          if (!std::isfinite(x[k]))
+            c_.fail_at(at, "$Nodes: node " + std::to_string(file_.node_tags[first + i]) +
+                               ": coordinate " + "xyz"[k] + " is not a finite number");
+        }
         for (int k = 0; k < per - 3; ++k)
-          c_.real(node + ": parametric coordinate", false);
+          c_.real(parametric_what, false);
         file_.node_coords.push_back(x);
       }
     }
@@ -250,16 +262,16 @@ private:
       read += n;
       block.tags.reserve(n);
       block.nodes.reserve(n * type->num_nodes);
+      const std::string tag_what = what + ": element tag", node_what = what + ": node tag";
       for (std::uint64_t e = 0; e < n; ++e) {
         const std::size_t tag_at = c_.mark();
-        const std::uint64_t tag = c_.count(what + ": element tag", min_tag, max_tag);
+        const std::uint64_t tag = c_.count(tag_what, min_tag, max_tag);
         if (!tags.insert(tag).second)
           c_.fail_at(tag_at, what + ": element " + std::to_string(tag) + " is defined twice");
         block.tags.push_back(tag);
         for (int a = 0; a < type->num_nodes; ++a) {
           const std::size_t node_at = c_.mark();
-          const std::uint64_t node =
-              c_.count(what + ": element " + std::to_string(tag) + ": node tag", 1, kMaxCount);
+          const std::uint64_t node = c_.count(node_what, 1, kMaxCount);
           if (!file_.node_of.count(node))
             c_.fail_at(node_at, what + ": element " + std::to_string(tag) + ": node " +
                                     std::to_string(node) + " is not defined in $Nodes");
