@@ -190,6 +190,24 @@ TEST_F(MshFile, EveryTruncationIsRefused) {
              "$Nodes: number of entity blocks is 5, outside [0, 1]");
 }
 
+TEST_F(MshFile, Gmsh48CrashInputsAreRefused) {
+  // Inputs on which libgmsh 4.8's reader crashed (minimised fuzzer finds, docs/testing.md):
+  // each is malformed, so each must be refused, with the file named at a line.
+  int seen = 0;
+  for (const auto& entry : fs::directory_iterator(kCorpus)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("gmsh48_", 0) != 0) continue;
+    ++seen;
+    try {
+      read_gmsh(entry.path().string());
+      ADD_FAILURE() << name << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).find(entry.path().string() + ":"), 0u) << e.what();
+    }
+  }
+  EXPECT_EQ(seen, 17);
+}
+
 bool same(const Mesh& a, const Mesh& b) {
   return a.dim == b.dim && a.nodes == b.nodes && a.cell_types == b.cell_types &&
          a.cell_nodes == b.cell_nodes && a.cell_regions == b.cell_regions &&
