@@ -74,7 +74,7 @@ private:
 
   void section(const std::string& name, std::size_t at) {
     if (name.rfind("End", 0) == 0)
-      c_.fail_at(at, "$" + name + " without its opening $" + name.substr(3));
+      c_.fail_at(at, "$" + printable(name) + " without its opening $" + printable(name.substr(3)));
     const bool main = name == "MeshFormat" || name == "PhysicalNames" || name == "Entities" ||
                       name == "Nodes" || name == "Elements";
     if (main && !seen_.insert(name).second) c_.fail_at(at, "a second $" + name + " section");
@@ -93,7 +93,7 @@ private:
     else if (name == "PartitionedEntities")
       c_.fail_at(at, "partitioned meshes are not supported; save the mesh unpartitioned");
     else if (!c_.skip_past_line("$End" + name)) // e.g. $Comments, $NodeData: not used
-      c_.fail_at(at, "section $" + name + " is not closed by $End" + name);
+      c_.fail_at(at, "section $" + printable(name) + " is not closed by $End" + printable(name));
     if (main) c_.expect("$End" + name, "$" + name);
   }
 
