@@ -248,7 +248,9 @@ private:
       const std::size_t type_at = c_.mark();
       block.type = int(c_.integer(what + ": element type", 1, kMaxTag));
       const ElementType* type = element_type(block.type);
-      if (!type) c_.fail_at(type_at, what + ": unknown element type " + std::to_string(block.type));
+      if (!type)
+        c_.fail_at(type_at, what + ": unknown element type " + std::to_string(block.type) +
+                                " (known: Gmsh types 1-31, 92, 93)");
       if (type->dim != block.dim)
         c_.fail_at(type_at, what + ": elements of type '" + type->name + "' (dimension " +
                                 std::to_string(type->dim) + ") in an entity of dimension " +

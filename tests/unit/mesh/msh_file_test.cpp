@@ -134,7 +134,8 @@ TEST_F(MshFile, TagsInRangeAndUnique) {
 }
 
 TEST_F(MshFile, ElementTypesKnownWithTheirDimension) {
-  EXPECT_MSG(with_line(40, "2 1 99 1"), 40, "$Elements block 3: unknown element type 99");
+  EXPECT_MSG(with_line(40, "2 1 99 1"), 40,
+             "$Elements block 3: unknown element type 99 (known: Gmsh types 1-31, 92, 93)");
   EXPECT_MSG(with_line(40, "2 1 1 1"), 40,
              "elements of type 'Line 2' (dimension 1) in an entity of dimension 2");
   // A quad block needs four nodes per element: the fourth word is the $EndElements marker.
