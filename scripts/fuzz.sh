@@ -2,13 +2,12 @@
 # Fuzzes one of bipot's input readers with libFuzzer under ASan + UBSan (docs/testing.md).
 # Usage: scripts/fuzz.sh [yaml|msh] [seconds]     (defaults: yaml, 60)
 #   yaml  the YAML input reader (read_problem_text), from tests/fuzz/corpus_yaml
-#   msh   the Gmsh .msh reader (read_gmsh, through libgmsh), from tests/fuzz/corpus_msh
+#   msh   the .msh reader (read_gmsh, bipot's own MSH 4.1 parser), from tests/fuzz/corpus_msh
 # Installs clang if missing, builds only the harness (clang, -DBIPOT_FUZZ=ON) into
 # build-fuzz/ (FUZZ_BUILD_DIR), and fuzzes for the given time. New inputs go to
 # build-fuzz/fuzz-work/<reader>/corpus; a crash is saved in build-fuzz/fuzz-work/<reader>/ and
-# ends the run with a non-zero exit code. Extra arguments after the seconds go to libFuzzer:
-# libgmsh's own MSH 4 reader crashes on some malformed files within seconds, so a long msh run
-# wants `-fork=1 -ignore_crashes=1` (crashes are still saved; triage them in docs/testing.md).
+# ends the run with a non-zero exit code. Extra arguments after the seconds go to libFuzzer
+# (e.g. `-fork=1 -ignore_crashes=1` to go on after a crash; crashes are still saved).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$root/scripts/env.sh"
@@ -17,7 +16,7 @@ seconds="${2:-60}"
 shift $(( $# < 2 ? $# : 2 ))
 case "$reader" in
   yaml) flags=(-max_len=4096 -timeout=10) ;;
-  # Each input is a Gmsh session (initialise, read, finalise): a few ms; a hang is a finding.
+  # An input is read in well under a millisecond; a hang is a finding.
   msh) flags=(-max_len=4096 -timeout=20) ;;
   *) echo "usage: scripts/fuzz.sh [yaml|msh] [seconds]" >&2; exit 1 ;;
 esac

@@ -3,48 +3,20 @@
 #include "fem/core/error.hpp"
 #include "fem/mesh/cell_facets.hpp"
 
-#include <gmsh.h>
+#include "fem/gmsh/msh_cursor.hpp"
+#include "fem/gmsh/msh_element_types.hpp"
+#include "fem/gmsh/msh_file.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <mutex>
+#include <map>
 #include <optional>
-#include <sstream>
 #include <unordered_map>
 
 namespace bipot {
 
 namespace {
-
-/// One Gmsh session, serialised by a process-wide mutex. The flag guards against initialising
-/// twice should the reader ever be re-entered on the same thread.
-class GmshSession {
-public:
-  GmshSession() : lock_(mutex()) {
-    if (active()) throw Error("read_gmsh: Gmsh session already open (re-entered)");
-    gmsh::initialize(0, nullptr, false); // no user gmshrc: reproducible, silent
-    gmsh::option::setNumber("General.Terminal", 0);
-    active() = true;
-  }
-  ~GmshSession() {
-    gmsh::finalize();
-    active() = false;
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-
-private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static bool& active() {
-    static bool a = false;
-    return a;
-  }
-  std::lock_guard<std::mutex> lock_;
-};
 
 std::optional<CellType> cell_type_of(int gmsh_type) {
   switch (gmsh_type) {
@@ -71,22 +43,17 @@ std::optional<CellType> cell_type_of(int gmsh_type) {
   }
 }
 
-/// Gmsh opens a missing file as an empty model without an error, and reads MSH 2 as well:
-/// check both from the file's first lines before handing it to Gmsh.
-void check_msh4_header(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the Gmsh mesh file (missing or unreadable)");
-  std::string tag;
-  double version = 0.0;
-  in >> tag >> version;
-  if (tag != "$MeshFormat")
-    throw InputError(path + ": not a Gmsh MSH file (it does not start with $MeshFormat)");
-  if (!(version >= 4.0 && version < 5.0)) {
-    std::ostringstream os;
-    os << path << ": MSH format version " << version
-       << " is not supported; re-export it with 'gmsh -format msh4'";
-    throw InputError(os.str());
-  }
+/// Element families in the order Gmsh lists an entity's elements (triangles before
+/// quadrangles, tetrahedra before hexahedra, ...): the order cells had when libgmsh read the
+/// files, kept so that cell numbers (and messages naming them) do not change.
+int family_rank(int gmsh_type) {
+  const msh::ElementType* t = msh::element_type(gmsh_type);
+  const std::string name = t ? t->name : "";
+  static const char* const order[] = {"Triangle",   "Quadrilateral", "Tetrahedron",
+                                      "Hexahedron", "Prism",         "Pyramid"};
+  for (int r = 0; r < 6; ++r)
+    if (name.rfind(order[r], 0) == 0) return r;
+  return 6;
 }
 
 /// Elements of one physical group, flattened over its entities.
@@ -97,50 +64,48 @@ struct Group {
   std::vector<int> types;                      ///< Gmsh type per element
   std::vector<std::size_t> element_tags;       ///< per element
   std::vector<std::vector<std::size_t>> nodes; ///< Gmsh node tags per element
+  std::vector<std::size_t> block_pos;          ///< file offset of the element's block
 };
 
-std::vector<Group> read_groups() {
-  gmsh::vectorpair dim_tags;
-  gmsh::model::getPhysicalGroups(dim_tags);
+/// Physical groups in increasing (dimension, tag), each over its entities in increasing tag,
+/// each entity's elements by family then in file order. A group exists if an entity carries
+/// its tag, even without elements (a region without cells, an empty set).
+std::vector<Group> groups_of(const msh::File& file) {
+  std::map<msh::DimTag, std::vector<int>> entities_of; // group -> entity tags, increasing
+  for (const auto& [entity, physicals] : file.entity_physicals)
+    for (int p : physicals)
+      entities_of[{entity.first, p}].push_back(entity.second);
+  std::map<msh::DimTag, std::vector<const msh::ElementBlock*>> blocks_of; // entity -> blocks
+  for (const msh::ElementBlock& b : file.element_blocks)
+    blocks_of[{b.dim, b.entity}].push_back(&b);
+  for (auto& [entity, blocks] : blocks_of)
+    std::stable_sort(blocks.begin(), blocks.end(), [](const auto* a, const auto* b) {
+      return family_rank(a->type) < family_rank(b->type);
+    });
+
   std::vector<Group> groups;
-  for (const auto& [dim, tag] : dim_tags) {
+  for (const auto& [dim_tag, entities] : entities_of) {
     Group g;
-    g.dim = dim;
-    g.tag = tag;
-    gmsh::model::getPhysicalName(dim, tag, g.name);
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    g.dim = dim_tag.first;
+    g.tag = dim_tag.second;
+    auto name = file.physical_names.find(dim_tag);
+    if (name != file.physical_names.end()) g.name = name->second;
     for (int entity : entities) {
-      std::vector<int> types;
-      std::vector<std::vector<std::size_t>> element_tags, node_tags;
-      gmsh::model::mesh::getElements(types, element_tags, node_tags, dim, entity);
-      for (std::size_t t = 0; t < types.size(); ++t) {
-        const std::size_t n = element_tags[t].size();
-        const std::size_t per = n ? node_tags[t].size() / n : 0;
-        for (std::size_t e = 0; e < n; ++e) {
-          g.types.push_back(types[t]);
-          g.element_tags.push_back(element_tags[t][e]);
-          g.nodes.emplace_back(node_tags[t].begin() + e * per,
-                               node_tags[t].begin() + (e + 1) * per);
+      auto blocks = blocks_of.find({g.dim, entity});
+      if (blocks == blocks_of.end()) continue;
+      for (const msh::ElementBlock* b : blocks->second)
+        for (std::size_t e = 0; e < b->tags.size(); ++e) {
+          const auto per = std::size_t(b->nodes_per_element);
+          g.types.push_back(b->type);
+          g.element_tags.push_back(b->tags[e]);
+          g.nodes.emplace_back(b->nodes.begin() + std::ptrdiff_t(e * per),
+                               b->nodes.begin() + std::ptrdiff_t((e + 1) * per));
+          g.block_pos.push_back(b->pos);
         }
-      }
     }
     groups.push_back(std::move(g));
   }
   return groups;
-}
-
-std::string gmsh_type_name(int gmsh_type) {
-  std::string name;
-  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
-  std::vector<double> local;
-  try {
-    gmsh::model::mesh::getElementProperties(gmsh_type, name, dim, order, num_nodes, local,
-                                            num_primary);
-  } catch (...) {
-    name = "unknown";
-  }
-  return name;
 }
 
 /// Signed measure of a cell's orientation: 2D twice the corner polygon's area (shoelace),
@@ -200,7 +165,8 @@ std::string group_name(const Group& g, int mesh_dim) {
   return "physical_" + std::to_string(g.dim) + "_" + std::to_string(g.tag);
 }
 
-Mesh build_mesh(const std::string& path, const std::vector<Group>& groups) {
+Mesh build_mesh(const msh::Cursor& at, const msh::File& file, const std::vector<Group>& groups) {
+  const std::string& path = at.path();
   int dim = -1;
   for (const Group& g : groups)
     if (!g.types.empty()) dim = std::max(dim, g.dim);
@@ -222,10 +188,11 @@ Mesh build_mesh(const std::string& path, const std::vector<Group>& groups) {
     for (std::size_t e = 0; e < g.types.size(); ++e) {
       const auto type = cell_type_of(g.types[e]);
       if (!type || cell_dim(*type) != dim)
-        throw InputError(path + ": physical group '" + name + "' contains elements of type '" +
-                         gmsh_type_name(g.types[e]) + "' (Gmsh type " + std::to_string(g.types[e]) +
-                         "), which bipot does not support (supported: tri3, tri6, quad4, "
-                         "quad8, tet4, hex8 cells)");
+        at.fail_at(g.block_pos[e], "physical group '" + name + "' contains elements of type '" +
+                                       msh::element_type(g.types[e])->name + "' (Gmsh type " +
+                                       std::to_string(g.types[e]) +
+                                       "), which bipot does not support (supported: tri3, tri6, "
+                                       "quad4, quad8, tet4, hex8 cells)");
       auto [it, inserted] = owner.emplace(g.element_tags[e], name);
       if (!inserted)
         throw InputError(path + ": element " + std::to_string(g.element_tags[e]) +
@@ -246,19 +213,10 @@ Mesh build_mesh(const std::string& path, const std::vector<Group>& groups) {
   for (std::size_t i = 0; i < used.size(); ++i)
     new_id[used[i]] = Index(i);
 
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coord, parametric;
-  gmsh::model::mesh::getNodes(node_tags, coord, parametric, -1, -1, false, false);
-  mesh.nodes.assign(used.size(), {0.0, 0.0, 0.0});
-  std::vector<char> found(used.size(), 0);
-  for (std::size_t i = 0; i < node_tags.size(); ++i) {
-    auto it = new_id.find(node_tags[i]);
-    if (it == new_id.end()) continue;
-    mesh.nodes[it->second] = {coord[3 * i], coord[3 * i + 1], coord[3 * i + 2]};
-    found[it->second] = 1;
-  }
-  if (std::find(found.begin(), found.end(), 0) != found.end())
-    throw InputError(path + ": a cell references a node that the file does not define");
+  // Every element's nodes are defined: the parser checked each reference.
+  mesh.nodes.resize(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i)
+    mesh.nodes[i] = file.node_coords[file.node_of.at(used[i])];
   if (dim == 2) {
     double size = 0.0;
     for (const auto& x : mesh.nodes)
@@ -339,21 +297,35 @@ Mesh build_mesh(const std::string& path, const std::vector<Group>& groups) {
   return mesh;
 }
 
+/// The file's bytes. Its start is checked before the rest is read, so that a file that is
+/// not a mesh (/dev/zero, a YAML file given by mistake) is refused at once, and its size is
+/// bounded before it is read into memory.
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the Gmsh mesh file (missing or unreadable)");
+  const std::string magic = "$MeshFormat";
+  std::string text(magic.size(), '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  if (text != magic)
+    throw InputError(path + ": not a Gmsh MSH file (it does not start with $MeshFormat)");
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    text.append(chunk, std::size_t(in.gcount()));
+    if (text.size() > kMaxMshBytes)
+      throw InputError(path + ": larger than " + std::to_string(kMaxMshBytes >> 20) +
+                       " MiB, the largest mesh file bipot reads");
+  }
+  if (in.bad()) throw InputError(path + ": read error in the Gmsh mesh file");
+  return text;
+}
+
 } // namespace
 
 Mesh read_gmsh(const std::string& path) {
-  check_msh4_header(path);
-  GmshSession session;
-  try {
-    gmsh::open(path);
-    return build_mesh(path, read_groups());
-  } catch (const Error&) {
-    throw;
-  } catch (const std::string& message) { // Gmsh 4.8 throws its error text as std::string
-    throw InputError(path + ": Gmsh: " + message);
-  } catch (const std::exception& e) {
-    throw InputError(path + ": Gmsh: " + e.what());
-  }
+  const std::string text = read_bytes(path);
+  const msh::File file = msh::parse(path, text);
+  return build_mesh(msh::Cursor(path, text), file, groups_of(file));
 }
 
 } // namespace bipot

@@ -1,13 +1,17 @@
 #pragma once
-/// Reading Gmsh MSH 4 meshes through the Gmsh C++ API (libgmsh, private to this target).
+/// Reading Gmsh MSH 4.1 meshes with a strict parser of bipot's own (fem/gmsh/msh_file.hpp).
 
 #include "fem/mesh/mesh.hpp"
 
+#include <cstddef>
 #include <string>
 
 namespace bipot {
 
-/// Reads a Gmsh mesh file in MSH 4 format (ASCII or binary).
+/// Largest .msh file read (bytes): the file is read whole into memory.
+constexpr std::size_t kMaxMshBytes = std::size_t(2) << 30;
+
+/// Reads a Gmsh mesh file in MSH 4.1 format (ASCII or binary, as Gmsh 4 writes it).
 ///
 /// - The mesh dimension is the highest dimension of the physical groups that hold elements
 ///   (must be 2 or 3; a 2D mesh must lie in the plane z = 0).
@@ -24,13 +28,12 @@ namespace bipot {
 ///   mid-side nodes included.
 ///
 /// Supported elements: the CellType list (point, line 2/3, triangle 3/6, quadrangle 4/8,
-/// tetrahedron 4, hexahedron 8). Throws bipot::InputError naming the file for a missing or
-/// unreadable file, a file that is not MSH 4, an unsupported element type in a physical group
-/// (naming the type), or an inconsistent mesh.
-///
-/// Gmsh has global state and is not thread-safe: calls are serialised by a mutex; each call
-/// initialises Gmsh (silently, without reading user configuration files) and finalises it
-/// before returning. Do not call it while other code of the process holds a Gmsh session.
+/// tetrahedron 4, hexahedron 8); elements of other Gmsh types may be in the file outside the
+/// physical groups bipot uses. Throws bipot::InputError naming the file (and the line where
+/// the file is at fault) for a missing or unreadable file, a file that is not MSH 4.1, a
+/// malformed file (msh::parse lists the checks), an unsupported element type in a physical
+/// group (naming the type), or an inconsistent mesh. libgmsh is not used: its reader is not
+/// safe on malformed files. Thread-safe (no global state).
 Mesh read_gmsh(const std::string& path);
 
 } // namespace bipot

@@ -1,7 +1,7 @@
-// Fuzz harness: the Gmsh .msh reader. read_gmsh takes a path, so each input is written to a
-// file of this process's own in the temporary directory. Invalid input must be reported as a
-// bipot::Error; any other exception, a crash or a sanitizer report is a bug (in bipot, or in
-// libgmsh when the stack says so).
+// Fuzz harness: the .msh reader (bipot's own MSH 4.1 parser, fem/gmsh). read_gmsh takes a
+// path, so each input is written to a file of this process's own in the temporary directory.
+// Invalid input must be reported as a bipot::Error; any other exception, a crash or a
+// sanitizer report is a bug.
 #include "harness.hpp"
 
 #include "fem/core/error.hpp"

@@ -3,8 +3,8 @@
 
 Each layer may include itself and the layers it depends on, directly or through them (the
 "depends on" column of the table in docs/architecture.md, encoded below), and only its own
-third-party headers (Trilinos and MUMPS in fem/linalg, VTK in fem/io, Gmsh in fem/gmsh,
-yaml-cpp in fem/input). Tests are not checked: they may include any layer.
+third-party headers (Trilinos and MUMPS in fem/linalg, VTK in fem/io, yaml-cpp in fem/input;
+Gmsh in none). Tests are not checked: they may include any layer.
 
 Usage: layer_includes.py SOURCE_ROOT     (a CTest test: layer_includes)
 """
@@ -52,7 +52,9 @@ THIRD_PARTY = [
     # every rank, apps/common/app_support.cpp); the table keeps MPI private to fem/linalg.
     (re.compile(r"^mpi\.h$"), "MPI", {"fem/linalg", "apps/common"}),
     (re.compile(r"^vtk"), "VTK", {"fem/io"}),
-    (re.compile(r"^gmsh\.h$"), "Gmsh", {"fem/gmsh"}),
+    # libgmsh's reader crashes on malformed files: bipot reads .msh itself (fem/gmsh), and
+    # only tests use libgmsh, to write meshes.
+    (re.compile(r"^gmsh\.h$"), "Gmsh", set()),
     (re.compile(r"^yaml-cpp/"), "yaml-cpp", {"fem/input"}),
 ]
 

@@ -1,10 +1,17 @@
 #pragma once
-/// Test helper: a stage of the block-on-base models (regions base and block of a blocks
-/// mesh with sets bottom and top) as YAML text.
+/// Test helpers: the block-on-base models (regions base and block of a blocks mesh with sets
+/// bottom and top) as YAML text: their mesh and a stage.
 
 #include <string>
 
 namespace bipot::test {
+
+/// The `mesh:` section: a 1 m wide base (y in [-0.5, 0]) under a block (y in [0, 0.5]),
+/// 4 quad4 cells across, 2 in the base's height and 3 in the block's.
+inline const std::string block_on_base_mesh = "mesh:\n  blocks:\n    cell: quad4\n"
+                                              "    x: {breaks: [0, 1.0], cells: [4]}\n"
+                                              "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
+                                              "    regions: [base, block]\n";
 
 /// The stage `name` with the bottom fixed and the top moved to (x, y) (m) at its end over
 /// `increments`; `extra` (indented YAML lines) is inserted before its conditions.

@@ -13,6 +13,7 @@
 #include "fem/linalg/communicator.hpp"
 #include "tests/support/model_from_text.hpp"
 
+#include "tests/support/block_stage.hpp"
 #include "tests/support/serial_reference.hpp"
 
 #include <gtest/gtest.h>
@@ -29,11 +30,7 @@ namespace {
 
 std::string block_input(const std::string& interface, const std::string& solver,
                         const std::string& stages) {
-  return "kinematics: plane_strain\n"
-         "mesh:\n  blocks:\n    cell: quad4\n"
-         "    x: {breaks: [0, 1.0], cells: [4]}\n"
-         "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
-         "    regions: [base, block]\n"
+  return "kinematics: plane_strain\n" + test::block_on_base_mesh +
          "materials:\n"
          "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
          "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"

@@ -24,11 +24,7 @@ namespace {
 
 std::string block(const std::string& block_material, const std::string& law,
                   const std::string& stages) {
-  return "kinematics: plane_strain\n"
-         "mesh:\n  blocks:\n    cell: quad4\n"
-         "    x: {breaks: [0, 1.0], cells: [4]}\n"
-         "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
-         "    regions: [base, block]\n"
+  return "kinematics: plane_strain\n" + test::block_on_base_mesh +
          "materials:\n"
          "  base: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
          "  block: " +

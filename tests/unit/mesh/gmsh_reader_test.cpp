@@ -261,9 +261,10 @@ TEST(GmshReader, MissingFileAndOldFormat) {
         gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
       },
       old);
-  EXPECT_EQ(input_error(old.string()),
-            old.string() +
-                ": MSH format version 2.2 is not supported; re-export it with 'gmsh -format msh4'");
+  EXPECT_EQ(
+      input_error(old.string()),
+      old.string() +
+          ":2: MSH format version 2.2 is not supported; re-export it with 'gmsh -format msh4'");
   EXPECT_NE(input_error(kGeo).find("not a Gmsh MSH file"), std::string::npos);
 }
 
