@@ -2,7 +2,8 @@
 // drained triaxial compression against its closed form, a failed increment leaving the committed
 // state untouched, a cut-back run equal to the run planned with the sub-increments, and Newton's
 // quadratic convergence with the consistent tangent, with and without the condensed generalized
-// Newton.
+// Newton. With mohr_coulomb: the two contact solvers agree, and a singular tangent (apex) is cut
+// back.
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -364,6 +365,46 @@ TEST(PlasticNewton, MohrCoulombGeneralizedNewtonMatchesSemismooth) {
               s.force, du);
   EXPECT_NEAR(g.force, s.force, 1e-8 * std::abs(s.force));
   EXPECT_LE(du, 1e-8 * 0.05);
+}
+
+// A failed factorisation is a failed increment, cut back like the others. Mohr-Coulomb soil
+// with almost no cohesion (c = 1 kPa, phi = 35 deg, psi = 5 deg) under the footing with the
+// frictional joint, semismooth_newton, 8 increments: in the first, a Newton iterate puts
+// points at the apex, whose tangent is zero, and MUMPS finds the matrix numerically singular
+// (shown with max_cutbacks = 0: the run stops there, naming the factorisation). With the
+// default cut-backs the run gets through and ends in equilibrium, on the solution that
+// generalized_newton (no cut-back) finds with the 8 planned increments: within 1e-4, since
+// the sub-increments change the plastic path a little (8 against 16 increments: 2.4e-3).
+TEST(PlasticState, SingularTangentIsCutBack) {
+  const std::string soil = "{type: mohr_coulomb, youngs_modulus: 1.0e4, poissons_ratio: 0.3, "
+                           "cohesion: 1.0, friction_angle: 35.0, dilatancy_angle: 5.0}";
+  auto input = [&](const std::string& solver) {
+    return footing_input(joint, "contact_solver: {" + solver + ", tolerance: 1.0e-10}\n", 0.05, 8,
+                         soil);
+  };
+  try {
+    run_footing(input("type: semismooth_newton, max_cutbacks: 0"));
+    ADD_FAILURE() << "the first increment converged without a cut-back: nothing is tested";
+  } catch (const SolverError& e) {
+    const std::string what = e.what();
+    std::printf("without cut-backs: %.160s\n", what.c_str());
+    EXPECT_NE(what.find("step 1 of 8"), std::string::npos);
+    EXPECT_NE(what.find("factorisation failed"), std::string::npos);
+  }
+  const Model model = build_model(read_problem_text(input("type: semismooth_newton"), "f.yaml"));
+  StaticAnalysis analysis(model, AnalysisOptions{});
+  int first_cutbacks = -1;
+  analysis.run([&](const StepReport& r) {
+    if (r.global_step == 1) first_cutbacks = r.cutbacks;
+  });
+  EXPECT_GE(first_cutbacks, 1);
+  const double footing = analysis.reaction("footing")[1], bottom = analysis.reaction("bottom")[1];
+  const Histories g = run_footing(input("type: generalized_newton"));
+  std::printf("footing force %.12g, bottom %.12g; generalized_newton %.12g (%d cut-backs)\n",
+              footing, bottom, g.force, g.cutbacks);
+  EXPECT_NEAR(footing + bottom, 0.0, 1e-8 * std::abs(footing)); // the body's equilibrium
+  EXPECT_EQ(g.cutbacks, 0);
+  EXPECT_NEAR(footing, g.force, 1e-4 * std::abs(g.force));
 }
 
 // A failed increment leaves the committed state untouched: the footing pushed in one
