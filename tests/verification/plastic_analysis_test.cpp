@@ -371,7 +371,8 @@ TEST(PlasticNewton, MohrCoulombGeneralizedNewtonMatchesSemismooth) {
 // with almost no cohesion (c = 1 kPa, phi = 35 deg, psi = 5 deg) under the footing with the
 // frictional joint, semismooth_newton, 8 increments: in the first, a Newton iterate puts
 // points at the apex, whose tangent is zero, and MUMPS finds the matrix numerically singular
-// (shown with max_cutbacks = 0: the run stops there, naming the factorisation). With the
+// (shown with max_cutbacks = 0: the run stops there, naming the factorisation; counted once
+// by hand: 143 of the 560 points at the apex then, 4-62 at the matrices that factorised). With the
 // default cut-backs the run gets through and ends in equilibrium, on the solution that
 // generalized_newton (no cut-back) finds with the 8 planned increments: within 1e-4, since
 // the sub-increments change the plastic path a little (8 against 16 increments: 2.4e-3).
