@@ -205,7 +205,7 @@ TEST(StripFooting, PrandtlBearingCapacity) {
               static_cast<double>(iterations) / increments, cutbacks);
   EXPECT_NEAR(q / c, 2 + M_PI, 0.03 * (2 + M_PI));
   // The line search of the plain Newton path (from the first step of an increment) keeps
-  // every planned increment; undamped, 6 increments were cut back at Tresca's corners.
+  // every planned increment; undamped, the run needed 6 cut-backs at Tresca's corners.
   EXPECT_EQ(cutbacks, 0);
 }
 
