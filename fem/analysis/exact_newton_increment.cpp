@@ -9,12 +9,24 @@
 // factorised once per constrained set, R0 assembled once per increment, and a Newton
 // iteration costs O(|I|²) (GMRES on the factors of an earlier Newton matrix, ReusedLuSolver)
 // or O(|I|³) when it refactorises, independent of the mesh interior. A nonlinear bulk repeats the
-// condensation around each new bulk state (outer loop) until the assembled residual is met.
+// condensation around each new bulk state (outer loop) until the assembled residual is met,
+// each outer step backtracked on that whole residual.
 #include "fem/analysis/detail/static_analysis_impl.hpp"
 
 namespace bipot {
 
 using namespace analysis_detail;
+
+namespace {
+// max_i ‖F_λi‖ (kN): how far the multipliers are from the interface law at the interfaces'
+// last evaluate().
+double law_residual(const contact::InterfaceNewtonSystem& sys,
+                    const std::vector<bool>& constrained) {
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(sys.size());
+  sys.add(constrained, F, nullptr);
+  return sys.multiplier_residual(F);
+}
+} // namespace
 
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
                                                  PathStep* path) {
@@ -32,6 +44,9 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
   std::vector<Index> constrained_dofs;
   for (const auto& kv : target)
     constrained_dofs.push_back(kv.first);
+  std::vector<bool> prescribed(u.size());
+  for (const auto& kv : target)
+    prescribed[kv.first] = true;
   std::vector<bool> constrained_I(nI);
   for (Index k = 0; k < nI; ++k)
     constrained_I[k] = target.count(sys.dofs()[k]) != 0;
@@ -95,8 +110,11 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     // on the bulk, quadratic with the consistent tangent); the inner iterations solve a
     // linearised problem exactly and their residuals say nothing about the increment.
     if (!linear) log.history.push_back(full_norm / reference);
+    // The interface law at u: a damped outer step (below) leaves the multipliers between two
+    // inner solutions, off the law, so the outer test and merit need it besides equilibrium.
+    const double law = law_residual(sys, constrained_I);
     if (outer > 0) {
-      if (full_norm <= floor) return true;
+      if (full_norm <= floor && law <= copt.tolerance * reference) return true;
       if (outer >= copt.max_iterations) {
         log.failure = "the bulk (outer) iterations did not converge in " + std::to_string(outer) +
                       " condensations";
@@ -130,8 +148,9 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     std::vector<double> trial = u;
     Eigen::VectorXd z(nz), F(nz), dz(nz), F_try(nz), grad;
     Eigen::MatrixXd J(nz, nz);
+    const Eigen::VectorXd lambda0 = sys.multipliers();
     z.head(nI).setZero();
-    z.segment(nI, n - nI) = sys.multipliers();
+    z.segment(nI, n - nI) = lambda0;
     if (path) {
       z.head(nI) = path->predictor_scale * path->x_prev;
       z(n) = path->predictor_scale * path->dlambda_prev;
@@ -230,9 +249,32 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     summary.solve_seconds += seconds_since(t0);
     std::vector<double> du_all = du.gather_all();
     rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
+    const Eigen::VectorXd lambda1 = z.segment(nI, n - nI);
+    double step = 1.0;
+    if (!linear && copt.line_search) {
+      // Backtracking on the whole residual. With a plastic bulk the outer step is Newton on a
+      // piecewise smooth residual: where points sit at a kink of their return (plane/edge,
+      // edge/apex, elastic/plastic) and the apex's zero tangent makes K nearly singular
+      // nearby, the full step can overshoot and the undamped iteration cycles (the
+      // Mohr-Coulomb pile did, period 3). The prescribed DOFs always take their whole
+      // increment; the multipliers move along with the displacements.
+      t0 = std::chrono::steady_clock::now();
+      Constraints fixed;
+      for (const auto& kv : target)
+        fixed.set(kv.first, 0.0);
+      std::vector<double> trial(u.size());
+      step = backtracking_step(std::hypot(full_norm, law), [&](double s) {
+        for (std::size_t i = 0; i < u.size(); ++i)
+          trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
+        sys.set_multipliers(lambda0 + s * (lambda1 - lambda0));
+        const double force = residual_norm(trial, dtau, fixed);
+        return std::hypot(force, law_residual(sys, constrained_I));
+      });
+      summary.assembly_seconds += seconds_since(t0);
+    }
     for (std::size_t i = 0; i < u.size(); ++i)
-      u[i] += du_all[i];
-    sys.set_multipliers(z.segment(nI, n - nI));
+      u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
+    sys.set_multipliers(lambda0 + step * (lambda1 - lambda0));
     for (const auto& ia : interfaces)
       ia->evaluate(u, dtau);
     if (!linear && path) {

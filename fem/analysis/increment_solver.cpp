@@ -37,6 +37,9 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
   }
   move_obstacles(lambda);
 
+  std::vector<bool> prescribed(u.size());
+  for (const auto& kv : target)
+    prescribed[kv.first] = true;
   Constraints constraints;
   double reference = 0.0, baseline = -1.0;
   bool first_pass = true;
@@ -147,25 +150,29 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     std::vector<double> du_all = du.gather_all();
     rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     double step = 1.0;
-    if (has_contact && copt.line_search && !first_pass) {
-      // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs
-      // between stick and slip (or open and closed) back and forth; damping breaks the cycle.
+    // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs
+    // between stick and slip (or open and closed) back and forth; damping breaks the cycle.
+    // Without contact, a plastic bulk: from the first step on, which carries the prescribed
+    // increments and is the one that most often overshoots (points switching return branch);
+    // on the 100k-DOF strip footing it removed all 4 cut-backs and 11 % of the iterations.
+    const bool damp = copt.line_search && (has_contact ? !first_pass : !linear);
+    if (damp) {
       t0 = std::chrono::steady_clock::now();
-      // The merit is the free-DOF residual: constrained DOFs keep their (already applied)
-      // prescribed values, so their rows are eliminated as in the iteration itself.
+      // The merit is the free-DOF residual: constrained DOFs take their whole (prescribed)
+      // step, so their rows are eliminated as in the iteration itself.
       Constraints fixed;
       for (const auto& kv : target)
         fixed.set(kv.first, 0.0);
       std::vector<double> trial(u.size());
       step = backtracking_step(norm, [&](double s) {
         for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + s * du_all[i];
+          trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
         return residual_norm(trial, dtau, fixed);
       });
       summary.assembly_seconds += seconds_since(t0);
     }
     for (std::size_t i = 0; i < u.size(); ++i)
-      u[i] += step * du_all[i];
+      u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
     first_pass = false;
   }
 }

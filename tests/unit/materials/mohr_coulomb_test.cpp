@@ -137,6 +137,30 @@ TEST(MohrCoulomb, ConsistentTangentInEveryBranch) {
   expect_fd_tangent(m, Vec3(-60, -80, -100), MohrCoulomb::Elastic);
 }
 
+// The apex tangent is zero, exactly, and that is the consistent tangent: mohr_coulomb is
+// perfectly plastic, so every trial beyond the apex returns to the same stress c cot phi
+// (10 sqrt 3 here) and dsigma/deps = 0 (the finite differences of ConsistentTangentInEveryBranch
+// agree). For these trials the three-plane set has a negative multiplier (at (40, 35, 30):
+// -2.28e-3 on the main plane), so the return is the vertex itself. A hardening apex would
+// move with the flow and have a tangent, but no material here has one. How Newton copes with
+// the zero rows: docs/materials/mohr_coulomb.md.
+TEST(MohrCoulomb, ApexTangentIsExactlyZero) {
+  const MohrCoulomb m(E, nu, c, phi, psi);
+  const double apex = 10 * std::sqrt(3.0), scale = m.elasticity_matrix(6).cwiseAbs().maxCoeff();
+  for (const Vec3& t : {Vec3(40, 35, 30), Vec3(20, 18, 17.5), Vec3(300, 100, 90)}) {
+    Voigt strain = Voigt::Zero(6), s, sigma0(6);
+    sigma0 << t(0), t(1), t(2), 0, 0, 0;
+    VoigtMatrix D;
+    m.update(strain, sigma0, nullptr, s, D, nullptr);
+    EXPECT_EQ(m.return_stress(stress_tensor(sigma0), 0.0).branch, MohrCoulomb::Apex);
+    EXPECT_NEAR((s + sigma0)(0), apex, 1e-12 * apex);
+    EXPECT_NEAR((s + sigma0)(2), apex, 1e-12 * apex);
+    EXPECT_LE(D.cwiseAbs().maxCoeff(), 1e-12 * scale);
+    const VoigtMatrix fd = test::fd_tangent(m, strain, sigma0, nullptr, 1e-7);
+    EXPECT_LE(fd.cwiseAbs().maxCoeff(), 1e-6 * scale);
+  }
+}
+
 // Exactly equal trial principal stresses (σxx = σyy, as in a triaxial test): the tangent's
 // rotation term uses its limit ∂s_a/∂λ_a − ∂s_a/∂λ_b there; central differences (whose
 // perturbations split the pair) must agree. Left edge (σ1 = σ2) and right edge (σ2 = σ3).
