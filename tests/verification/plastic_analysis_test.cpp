@@ -393,7 +393,7 @@ TEST(PlasticState, SingularTangentIsCutBack) {
     EXPECT_NE(what.find("step 1 of 8"), std::string::npos);
     EXPECT_NE(what.find("factorisation failed"), std::string::npos);
   }
-  const Model model = build_model(read_problem_text(input("type: semismooth_newton"), "f.yaml"));
+  const Model model = test::model_from_text(input("type: semismooth_newton"), "f.yaml");
   StaticAnalysis analysis(model, AnalysisOptions{});
   int first_cutbacks = -1;
   analysis.run([&](const StepReport& r) {
