@@ -43,7 +43,7 @@ const std::string input =
     "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
     "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
     "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.01}\n"
-    "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n"
+    "contact_solver: {type: generalized_newton, tolerance: 1.0e-13, max_iterations: 10}\n"
     "stages:\n" +
     block_stage("press", 0, -2e-3) + block_stage("shear", 6e-3, -2e-3, "", 4) +
     block_stage("lift", 8e-3, 1e-3,
