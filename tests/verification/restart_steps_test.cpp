@@ -30,11 +30,7 @@ namespace {
 using test::block_stage;
 
 const std::string input =
-    "kinematics: plane_strain\n"
-    "mesh:\n  blocks:\n    cell: quad4\n"
-    "    x: {breaks: [0, 1.0], cells: [4]}\n"
-    "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
-    "    regions: [base, block]\n"
+    std::string("kinematics: plane_strain\n") + test::block_on_base_mesh +
     "materials:\n"
     "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
     "  block: {type: von_mises, youngs_modulus: 2.0e4, poissons_ratio: 0.25, yield_stress: 30.0, "
