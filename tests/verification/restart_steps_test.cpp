@@ -15,6 +15,7 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "tests/support/block_stage.hpp"
+#include "tests/support/block_step_row.hpp"
 
 #include <gtest/gtest.h>
 
@@ -70,20 +71,7 @@ Steps record(StaticAnalysis& analysis) {
   int level = 0; // the cut-back level an increment starts at
   std::string stage;
   const RunSummary summary = analysis.run([&](const StepReport& r) {
-    std::vector<double> row = {double(r.stage_index), double(r.step), r.time, r.load_factor};
-    for (const char* set : {"top", "bottom"})
-      for (double f : analysis.reaction(set))
-        row.push_back(f);
-    const auto& ia = *analysis.interfaces()[0];
-    for (double f : ia.resultant())
-      row.push_back(f);
-    double beta = 1;
-    for (const auto& p : ia.results())
-      beta = std::min(beta, p.beta);
-    row.push_back(beta);
-    for (double e : {r.energy.external_work, r.energy.bulk_energy, r.energy.interface_energy,
-                     r.energy.adhesion_dissipation, r.energy.contact_work})
-      row.push_back(e);
+    std::vector<double> row = test::block_step_row(analysis, r);
     row.push_back(largest_plastic_strain(analysis));
     out.rows.push_back(row);
     // The stage driver halves after each failed attempt and grows back by one level after

@@ -12,6 +12,7 @@
 #include "fem/input/problem_reader.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "tests/support/block_stage.hpp"
+#include "tests/support/block_step_row.hpp"
 #include "tests/support/model_from_text.hpp"
 
 #include <gtest/gtest.h>
@@ -56,22 +57,8 @@ struct Steps {
 Steps record(StaticAnalysis& analysis) {
   Steps out;
   analysis.run([&](const StepReport& r) {
-    std::vector<double> row = {double(r.stage_index), double(r.step), r.time, r.load_factor};
-    for (const char* set : {"top", "bottom"})
-      for (double f : analysis.reaction(set))
-        row.push_back(f);
-    const auto& ia = *analysis.interfaces()[0];
-    for (double f : ia.resultant())
-      row.push_back(f);
-    double beta = 1;
-    for (const auto& p : ia.results())
-      beta = std::min(beta, p.beta);
-    row.push_back(beta);
     // The energy balance continues too (its totals are cumulative since the start).
-    for (double e : {r.energy.external_work, r.energy.bulk_energy, r.energy.interface_energy,
-                     r.energy.adhesion_dissipation, r.energy.contact_work})
-      row.push_back(e);
-    out.rows.push_back(row);
+    out.rows.push_back(test::block_step_row(analysis, r));
   });
   out.u = analysis.displacement();
   return out;
