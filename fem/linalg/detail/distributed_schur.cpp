@@ -1,0 +1,196 @@
+// MUMPS on every rank for the Schur complement of generalized_newton: the bulk matrix is
+// factorised from each rank's own rows, so memory and factorisation work are shared instead
+// of the whole matrix being gathered on rank 0 (rooted_direct_solver.cpp).
+#include "fem/linalg/detail/distributed_schur.hpp"
+
+#include "fem/core/error.hpp"
+#include "fem/linalg/communicator.hpp"
+
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <string>
+
+namespace bipot::detail {
+
+namespace {
+
+std::vector<int> offsets(const std::vector<int>& counts) {
+  std::vector<int> displs(counts.size(), 0);
+  for (std::size_t i = 1; i < counts.size(); ++i)
+    displs[i] = displs[i - 1] + counts[i - 1];
+  return displs;
+}
+
+} // namespace
+
+struct DistributedSchur::Impl {
+  DMUMPS_STRUC_C id{};
+  int rank = mpi_rank(), size = mpi_size();
+  Teuchos::RCP<CrsMatrix> source; ///< the matrix whose structure was analysed
+  std::vector<long long> schur_dofs;
+  std::vector<MUMPS_INT> irn, jcn, listvar; ///< 1-based, as MUMPS counts
+  std::vector<double> values, schur, rhs, redrhs;
+  std::vector<int> owned_counts, owned_offsets; ///< rows per rank, for b and x
+  bool initialised = false;
+
+  // Every rank calls; INFOG(1) is global, so every rank throws or none does.
+  void call(int job, const char* what) {
+    id.job = job;
+    dmumps_c(&id);
+    const int code = id.infog[0];
+    if (code >= 0) return;
+    std::string why = code == -10   ? "numerically singular matrix (MUMPS INFOG(1) = -10)"
+                      : code == -13 ? "memory allocation failed (MUMPS INFOG(1) = -13)"
+                                    : "MUMPS error INFOG(1) = " + std::to_string(code) +
+                                          ", INFOG(2) = " + std::to_string(id.infog[1]);
+    throw SolverError(std::string("direct solver (mumps, distributed) ") + what +
+                      " failed: " + why);
+  }
+
+  void analyse(const CrsMatrix& A) {
+    const auto local = A.getLocalMatrixHost();
+    const auto row_map = A.getRowMap();
+    const auto col_map = A.getColMap();
+    const std::size_t n_rows = A.getNodeNumRows();
+    const std::size_t nnz = local.graph.entries.extent(0);
+    irn.resize(nnz);
+    jcn.resize(nnz);
+    for (std::size_t r = 0; r < n_rows; ++r)
+      for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
+        irn[k] = static_cast<MUMPS_INT>(row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r)) + 1);
+        jcn[k] = static_cast<MUMPS_INT>(col_map->getGlobalElement(local.graph.entries(k)) + 1);
+      }
+    values.assign(nnz, 0.0);
+    const int n_owned = static_cast<int>(n_rows);
+    owned_counts.assign(size, 0);
+    MPI_Allgather(&n_owned, 1, MPI_INT, owned_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    owned_offsets = offsets(owned_counts);
+    const std::size_t n = A.getGlobalNumRows();
+    id.n = static_cast<MUMPS_INT>(n);
+    id.icntl[17] = 3; // ICNTL(18) = 3: distributed assembled matrix, entries given by each rank
+    id.nnz_loc = static_cast<MUMPS_INT8>(nnz);
+    id.irn_loc = irn.data();
+    id.jcn_loc = jcn.data();
+    id.a_loc = values.data();
+    const std::size_t m = schur_dofs.size();
+    listvar.resize(m);
+    for (std::size_t i = 0; i < m; ++i)
+      listvar[i] = static_cast<MUMPS_INT>(schur_dofs[i] + 1);
+    schur.assign(rank == 0 ? m * m : 0, 0.0);
+    redrhs.assign(m, 0.0);
+    rhs.assign(rank == 0 ? n : 0, 0.0);
+    // ICNTL(19) = 1: the Schur complement centralised on the host (rank 0), by rows for an
+    // unsymmetric matrix; the list of its variables is read on the host.
+    id.size_schur = static_cast<MUMPS_INT>(m);
+    id.listvar_schur = listvar.data();
+    id.schur = rank == 0 ? schur.data() : nullptr;
+    id.schur_lld = static_cast<MUMPS_INT>(m);
+    id.icntl[18] = m > 0 ? 1 : 0;
+    // ICNTL(24) = 1: count null pivots (INFOG(28)); a singular A_BB is otherwise not reported.
+    id.icntl[23] = m > 0 ? 1 : 0;
+    call(1, "analysis");
+  }
+};
+
+DistributedSchur::DistributedSchur() : impl_(std::make_unique<Impl>()) {
+  auto& id = impl_->id;
+  id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_WORLD));
+  id.par = 1; // the host works too
+  id.sym = 0; // general unsymmetric
+  id.job = -1;
+  dmumps_c(&id);
+  impl_->initialised = id.infog[0] >= 0;
+  if (!impl_->initialised)
+    throw SolverError("direct solver (mumps, distributed): initialisation failed, INFOG(1) = " +
+                      std::to_string(id.infog[0]));
+  for (int k : {0, 1, 2})
+    id.icntl[k] = -1; // no output: failures come back as INFOG codes
+  id.icntl[3] = 0;
+  id.icntl[6] = 7; // ICNTL(7): the ordering MUMPS chooses (used when the analysis is centralised)
+}
+
+DistributedSchur::~DistributedSchur() {
+  if (!impl_->initialised) return;
+  impl_->id.job = -2; // collective, as the instance was created
+  dmumps_c(&impl_->id);
+}
+
+void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
+                                 const std::vector<long long>& schur_dofs) {
+  auto& im = *impl_;
+  if (im.source.get() != A.get() || im.schur_dofs != schur_dofs) {
+    im.source = Teuchos::null; // not reusable if the analysis throws
+    im.schur_dofs = schur_dofs;
+    im.analyse(*A);
+    im.source = A;
+  }
+  const auto local = A->getLocalMatrixHost();
+  std::copy(local.values.data(), local.values.data() + local.values.extent(0),
+            im.values.begin());
+  // Off-diagonal pivoting can need more workspace than the analysis estimated
+  // (INFOG(1) = -8, -9): retry with a larger relaxation, as the MUMPS manual advises.
+  for (int attempt = 0;; ++attempt) {
+    im.id.job = 2;
+    dmumps_c(&im.id);
+    const int code = im.id.infog[0];
+    if ((code == -8 || code == -9) && attempt < 4) {
+      im.id.icntl[13] = std::max(40, 2 * im.id.icntl[13]); // ICNTL(14): % extra workspace
+      continue;
+    }
+    if (code < 0) {
+      im.call(2, "factorisation"); // throws with the diagnosis
+    }
+    break;
+  }
+  if (!schur_dofs.empty() && im.id.infog[27] > 0)
+    throw SolverError("direct solver (mumps, distributed) factorisation failed: numerically "
+                      "singular matrix outside the Schur variables (" +
+                      std::to_string(im.id.infog[27]) + " null pivots, MUMPS INFOG(28))");
+  const std::size_t m = schur_dofs.size();
+  schur_.resize(m * m);
+  if (im.rank == 0) std::copy(im.schur.begin(), im.schur.end(), schur_.begin());
+  MPI_Bcast(schur_.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+std::vector<double> DistributedSchur::reduce(const double* b_owned) {
+  auto& im = *impl_;
+  MPI_Gatherv(b_owned, im.owned_counts[im.rank], MPI_DOUBLE, im.rhs.data(),
+              im.owned_counts.data(), im.owned_offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  im.id.rhs = im.rank == 0 ? im.rhs.data() : nullptr; // centralised on the host (ICNTL(20) = 0)
+  im.id.redrhs = im.rank == 0 ? im.redrhs.data() : nullptr;
+  im.id.lredrhs = im.id.size_schur;
+  im.id.nrhs = 1;
+  im.id.lrhs = im.id.n;
+  im.id.icntl[25] = 1; // ICNTL(26) = 1: condensation (forward elimination) only
+  try {
+    im.call(3, "condensation");
+  } catch (...) {
+    im.id.icntl[25] = 0;
+    throw;
+  }
+  im.id.icntl[25] = 0;
+  std::vector<double> reduced(im.redrhs);
+  MPI_Bcast(reduced.data(), static_cast<int>(reduced.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  return reduced;
+}
+
+void DistributedSchur::expand(const std::vector<double>& x_schur, double* x_owned) {
+  auto& im = *impl_;
+  if (im.rank == 0) std::copy(x_schur.begin(), x_schur.end(), im.redrhs.begin());
+  im.id.rhs = im.rank == 0 ? im.rhs.data() : nullptr; // still the partial solution of reduce()
+  im.id.redrhs = im.rank == 0 ? im.redrhs.data() : nullptr;
+  im.id.icntl[25] = 2; // ICNTL(26) = 2: expansion from the Schur variables' solution
+  try {
+    im.call(3, "expansion");
+  } catch (...) {
+    im.id.icntl[25] = 0;
+    throw;
+  }
+  im.id.icntl[25] = 0;
+  MPI_Scatterv(im.rhs.data(), im.owned_counts.data(), im.owned_offsets.data(), MPI_DOUBLE,
+               x_owned, im.owned_counts[im.rank], MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+} // namespace bipot::detail

@@ -1,0 +1,43 @@
+#pragma once
+/// Internal to fem/linalg: MUMPS Schur complement of a distributed matrix, factorised by all
+/// ranks together from their own rows (no rank holds the whole matrix).
+
+#include "fem/linalg/detail/tpetra_types.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace bipot::detail {
+
+/// One MUMPS instance on MPI_COMM_WORLD with distributed assembled input (ICNTL(18) = 3):
+/// each rank hands MUMPS the entries of the rows it owns, and MUMPS distributes the
+/// factorisation over the ranks. The Schur complement (ICNTL(19) = 1) and the right-hand
+/// sides of reduce()/expand() are centralised on rank 0 (vectors only) and broadcast or
+/// scattered from there. Every call is collective; a MUMPS failure (INFOG(1) < 0, the same on
+/// every rank) throws bipot::SolverError on every rank.
+class DistributedSchur {
+public:
+  DistributedSchur();
+  ~DistributedSchur();
+  DistributedSchur(const DistributedSchur&) = delete;
+  DistributedSchur& operator=(const DistributedSchur&) = delete;
+
+  /// Factorises A with the global rows `schur_dofs` (sorted) as Schur variables I; afterwards
+  /// schur() is S = A_II − A_IB A_BB⁻¹ A_BI on every rank (row-major). The analysis is
+  /// repeated only for another matrix object or another set of Schur variables.
+  void factorize(const Teuchos::RCP<CrsMatrix>& A, const std::vector<long long>& schur_dofs);
+  const std::vector<double>& schur() const { return schur_; }
+  /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b; keeps the partial
+  /// solution (on rank 0) for the next expand().
+  std::vector<double> reduce(const double* b_owned);
+  /// x with x_I = `x_schur` (same on every rank) and x_B = A_BB⁻¹ (b_B − A_BI x_I), b that of
+  /// the last reduce(); the owned block is written to `x_owned`.
+  void expand(const std::vector<double>& x_schur, double* x_owned);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<double> schur_;
+};
+
+} // namespace bipot::detail
