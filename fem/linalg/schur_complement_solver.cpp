@@ -1,6 +1,6 @@
 #include "fem/linalg/schur_complement_solver.hpp"
 
-#include "fem/linalg/detail/rooted_direct_solver.hpp"
+#include "fem/linalg/detail/distributed_schur.hpp"
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 
@@ -10,7 +10,7 @@
 namespace bipot {
 
 struct SchurComplementSolver::Impl {
-  detail::RootedDirectSolver direct{"mumps"};
+  detail::DistributedSchur direct;
 };
 
 SchurComplementSolver::SchurComplementSolver() : impl_(std::make_unique<Impl>()) {}
@@ -21,7 +21,7 @@ void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<I
   dofs_ = schur_dofs;
   std::sort(dofs_.begin(), dofs_.end());
   const std::vector<long long> vars(dofs_.begin(), dofs_.end());
-  impl_->direct.factorize_with_schur(A.impl_->matrix, vars);
+  impl_->direct.factorize(A.impl_->matrix, vars);
   const std::vector<double>& s = impl_->direct.schur();
   const Index m = static_cast<Index>(dofs_.size());
   // MUMPS returns an unsymmetric Schur complement by rows (ICNTL(19) = 1).

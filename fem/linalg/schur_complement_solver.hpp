@@ -19,8 +19,9 @@ class SparseMatrix;
 /// and x_B follows from x_I by one back substitution (expand()). While A does not change,
 /// nonlinear iterations on I cost nothing that grows with the rest of the mesh.
 ///
-/// The matrix is gathered and factorised on rank 0 (like `method: direct`); S and c are
-/// broadcast, so every rank can run the same dense iteration on I.
+/// Every rank hands MUMPS its own rows and the factorisation is shared by all ranks (no rank
+/// holds the whole matrix); S and c are broadcast, so every rank can run the same dense
+/// iteration on I.
 class SchurComplementSolver {
 public:
   SchurComplementSolver();

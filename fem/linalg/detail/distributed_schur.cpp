@@ -59,7 +59,8 @@ struct DistributedSchur::Impl {
     jcn.resize(nnz);
     for (std::size_t r = 0; r < n_rows; ++r)
       for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
-        irn[k] = static_cast<MUMPS_INT>(row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r)) + 1);
+        irn[k] = static_cast<MUMPS_INT>(
+            row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r)) + 1);
         jcn[k] = static_cast<MUMPS_INT>(col_map->getGlobalElement(local.graph.entries(k)) + 1);
       }
     values.assign(nnz, 0.0);
@@ -127,8 +128,7 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
     im.source = A;
   }
   const auto local = A->getLocalMatrixHost();
-  std::copy(local.values.data(), local.values.data() + local.values.extent(0),
-            im.values.begin());
+  std::copy(local.values.data(), local.values.data() + local.values.extent(0), im.values.begin());
   // Off-diagonal pivoting can need more workspace than the analysis estimated
   // (INFOG(1) = -8, -9): retry with a larger relaxation, as the MUMPS manual advises.
   for (int attempt = 0;; ++attempt) {
@@ -156,8 +156,8 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
 
 std::vector<double> DistributedSchur::reduce(const double* b_owned) {
   auto& im = *impl_;
-  MPI_Gatherv(b_owned, im.owned_counts[im.rank], MPI_DOUBLE, im.rhs.data(),
-              im.owned_counts.data(), im.owned_offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(b_owned, im.owned_counts[im.rank], MPI_DOUBLE, im.rhs.data(), im.owned_counts.data(),
+              im.owned_offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   im.id.rhs = im.rank == 0 ? im.rhs.data() : nullptr; // centralised on the host (ICNTL(20) = 0)
   im.id.redrhs = im.rank == 0 ? im.redrhs.data() : nullptr;
   im.id.lredrhs = im.id.size_schur;
@@ -189,8 +189,8 @@ void DistributedSchur::expand(const std::vector<double>& x_schur, double* x_owne
     throw;
   }
   im.id.icntl[25] = 0;
-  MPI_Scatterv(im.rhs.data(), im.owned_counts.data(), im.owned_offsets.data(), MPI_DOUBLE,
-               x_owned, im.owned_counts[im.rank], MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Scatterv(im.rhs.data(), im.owned_counts.data(), im.owned_offsets.data(), MPI_DOUBLE, x_owned,
+               im.owned_counts[im.rank], MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
 } // namespace bipot::detail

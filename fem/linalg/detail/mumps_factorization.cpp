@@ -75,9 +75,6 @@ public:
       id_.job = 2;
       dmumps_c(&id_);
       const int code = id_.infog[0];
-      if (code >= 0 && !schur_vars_.empty() && id_.infog[27] > 0)
-        throw std::runtime_error("numerically singular matrix outside the Schur variables (" +
-                                 std::to_string(id_.infog[27]) + " null pivots, MUMPS INFOG(28))");
       if (code >= 0) return;
       if ((code == -8 || code == -9) && attempt < 4) {
         id_.icntl[13] = std::max(40, 2 * id_.icntl[13]); // ICNTL(14): % extra workspace
@@ -88,59 +85,9 @@ public:
   }
 
   void solve(const double* b, double* x) override {
-    if (!schur_vars_.empty())
-      throw std::runtime_error("a Schur factorisation solves through reduce() and expand()");
     std::copy(b, b + id_.n, x);
     id_.rhs = x; // centralised right-hand side, overwritten by the solution
     call(3);
-  }
-
-  void set_schur_variables(const std::vector<long long>& variables) override {
-    schur_vars_.resize(variables.size());
-    for (std::size_t i = 0; i < variables.size(); ++i)
-      schur_vars_[i] = static_cast<MUMPS_INT>(variables[i] + 1);
-    const std::size_t m = variables.size();
-    schur_.assign(m * m, 0.0);
-    reduced_.assign(m, 0.0);
-    id_.size_schur = static_cast<MUMPS_INT>(m);
-    id_.listvar_schur = schur_vars_.data();
-    id_.schur = schur_.data();
-    id_.schur_lld = static_cast<MUMPS_INT>(m);
-    // ICNTL(19) = 1: the whole Schur complement, centralised on this (host) process, by rows
-    // for an unsymmetric matrix. 0 when empty: MUMPS refuses a Schur set of size 0.
-    id_.icntl[18] = m > 0 ? 1 : 0;
-    // ICNTL(24) = 1: count null pivots (INFOG(28)). Without it a Schur factorisation of a
-    // singular A_BB returned no error (checked on a zero matrix), unlike the plain one.
-    id_.icntl[23] = m > 0 ? 1 : 0;
-  }
-
-  const std::vector<double>& schur() const override { return schur_; }
-
-  void reduce(const double* b, double* work, double* reduced) override {
-    std::copy(b, b + id_.n, work);
-    if (schur_vars_.empty()) { // plain solve: nothing to reduce
-      id_.rhs = work;
-      call(3);
-      return;
-    }
-    id_.rhs = work;
-    id_.redrhs = reduced_.data();
-    id_.lredrhs = id_.size_schur;
-    id_.icntl[25] = 1; // ICNTL(26) = 1: condensation (forward elimination) only
-    call_then_reset(3);
-    std::copy(reduced_.begin(), reduced_.end(), reduced);
-  }
-
-  void expand(double* work, const double* x_schur, double* x) override {
-    if (!schur_vars_.empty()) {
-      std::copy(x_schur, x_schur + reduced_.size(), reduced_.begin());
-      id_.rhs = work;
-      id_.redrhs = reduced_.data();
-      id_.lredrhs = id_.size_schur;
-      id_.icntl[25] = 2; // ICNTL(26) = 2: expansion from the Schur variables' solution
-      call_then_reset(3);
-    }
-    std::copy(work, work + id_.n, x);
   }
 
 private:
@@ -150,16 +97,7 @@ private:
     if (id_.infog[0] < 0) throw std::runtime_error(mumps_error(id_.infog[0], id_.infog[1]));
   }
 
-  void call_then_reset(int job) {
-    id_.job = job;
-    dmumps_c(&id_);
-    id_.icntl[25] = 0; // ICNTL(26): back to ordinary solves
-    if (id_.infog[0] < 0) throw std::runtime_error(mumps_error(id_.infog[0], id_.infog[1]));
-  }
-
   DMUMPS_STRUC_C id_{};
-  std::vector<MUMPS_INT> schur_vars_; ///< 1-based, as MUMPS counts
-  std::vector<double> schur_, reduced_;
   std::vector<MUMPS_INT> irn_, jcn_;
   std::vector<double> values_;
 };

@@ -27,21 +27,6 @@ public:
   virtual void factorize(const std::vector<double>& values) = 0;
   /// x = A⁻¹ b for vectors of length n.
   virtual void solve(const double* b, double* x) = 0;
-
-  // Schur complement on a set of variables I (the rest B): S = A_II − A_IB A_BB⁻¹ A_BI.
-  // Only MUMPS offers it (ICNTL(19)); the defaults throw.
-
-  /// Keeps `variables` (0-based, sorted) as Schur variables: call before analyse(). After
-  /// each factorize(), schur() holds S, row-major, size |I|².
-  virtual void set_schur_variables(const std::vector<long long>& variables);
-  virtual const std::vector<double>& schur() const;
-  /// Condensation of b (length n): `reduced` (length |I|) = b_I − A_IB A_BB⁻¹ b_B. `work`
-  /// (length n) receives the package's partial solution and must be passed unchanged to
-  /// expand().
-  virtual void reduce(const double* b, double* work, double* reduced);
-  /// Expansion: x (length n) with x_I = `x_schur` and x_B = A_BB⁻¹ (b_B − A_BI x_I), b the
-  /// vector of the reduce() that filled `work`.
-  virtual void expand(double* work, const double* x_schur, double* x);
 };
 
 /// MUMPS multifrontal LU with the ordering MUMPS chooses (mumps_factorization.cpp).

@@ -62,9 +62,6 @@ struct RootedDirectSolver::Impl {
   // Rank 0 only: the gathered structure and its factorisation.
   RootCsr structure;
   std::unique_ptr<RootFactorization> lu;
-  std::vector<long long> schur_vars; ///< Schur variables of the analysis (empty: none)
-  std::vector<double> schur;         ///< the Schur complement, every rank
-  std::vector<double> work;          ///< rank 0: partial solution between reduce and expand
 
   void gather_structure(const CrsMatrix& A);
   std::vector<double> gather_values(const CrsMatrix& A) const;
@@ -90,7 +87,6 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
     for (std::size_t r = 0; r < all_sizes.size(); ++r)
       structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
     lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization();
-    if (!schur_vars.empty()) lu->set_schur_variables(schur_vars);
     lu->analyse(structure);
   });
 }
@@ -115,58 +111,6 @@ void RootedDirectSolver::factorize(const Teuchos::RCP<CrsMatrix>& A) {
   }
   const auto values = im.gather_values(*A);
   on_root(im.rank, im.package, "factorisation", [&] { im.lu->factorize(values); });
-}
-
-void RootedDirectSolver::factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
-                                              const std::vector<long long>& schur_dofs) {
-  auto& im = *impl_;
-  if (im.source.get() != A.get() || im.schur_vars != schur_dofs) {
-    im.source = Teuchos::null; // not reusable if the analysis throws
-    im.schur_vars = schur_dofs;
-    im.gather_structure(*A);
-    im.source = A;
-  }
-  const auto values = im.gather_values(*A);
-  on_root(im.rank, im.package, "factorisation", [&] {
-    im.lu->factorize(values);
-    im.schur = im.lu->schur();
-  });
-  const std::size_t m = schur_dofs.size();
-  im.schur.resize(m * m);
-  MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-}
-
-const std::vector<double>& RootedDirectSolver::schur() const {
-  return impl_->schur;
-}
-
-std::vector<double> RootedDirectSolver::reduce(const double* b_owned) {
-  auto& im = *impl_;
-  const int n_owned = static_cast<int>(im.source->getNodeNumRows());
-  const auto displs = displacements(im.owned_counts);
-  std::vector<double> b_all;
-  if (im.rank == 0) {
-    b_all.resize(im.structure.size());
-    im.work.resize(b_all.size());
-  }
-  MPI_Gatherv(b_owned, n_owned, MPI_DOUBLE, b_all.data(), im.owned_counts.data(), displs.data(),
-              MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  std::vector<double> reduced(im.schur_vars.size());
-  on_root(im.rank, im.package, "condensation",
-          [&] { im.lu->reduce(b_all.data(), im.work.data(), reduced.data()); });
-  MPI_Bcast(reduced.data(), static_cast<int>(reduced.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  return reduced;
-}
-
-void RootedDirectSolver::expand(const std::vector<double>& x_schur, double* x_owned) {
-  auto& im = *impl_;
-  const int n_owned = static_cast<int>(im.source->getNodeNumRows());
-  const auto displs = displacements(im.owned_counts);
-  std::vector<double> x_all(im.rank == 0 ? im.structure.size() : 0);
-  on_root(im.rank, im.package, "expansion",
-          [&] { im.lu->expand(im.work.data(), x_schur.data(), x_all.data()); });
-  MPI_Scatterv(x_all.data(), im.owned_counts.data(), displs.data(), MPI_DOUBLE, x_owned, n_owned,
-               MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
 void RootedDirectSolver::solve(const double* b_owned, double* x_owned) {

@@ -29,19 +29,6 @@ public:
   /// x = A^{-1} b for the owned blocks of b and x (collective).
   void solve(const double* b_owned, double* x_owned);
 
-  /// Factorises A keeping the global rows `schur_dofs` (sorted) as Schur variables I (MUMPS
-  /// only, collective): afterwards schur() is S = A_II − A_IB A_BB⁻¹ A_BI on every rank
-  /// (row-major). A new set of Schur variables repeats the analysis.
-  void factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
-                            const std::vector<long long>& schur_dofs);
-  const std::vector<double>& schur() const;
-  /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b (collective). Keeps the
-  /// partial solution for the next expand().
-  std::vector<double> reduce(const double* b_owned);
-  /// x with x_I = `x_schur` (same on every rank) and x_B = A_BB⁻¹ (b_B − A_BI x_I), b the
-  /// vector of the last reduce(); owned block written to `x_owned` (collective).
-  void expand(const std::vector<double>& x_schur, double* x_owned);
-
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
