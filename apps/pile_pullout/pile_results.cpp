@@ -95,8 +95,8 @@ void PileResults::write_profile(const StepReport& report, const StaticAnalysis& 
     // of the pile relative to the soil, upward positive, is −g_t.
     std::snprintf(line, sizeof line, "%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%s,%s\n",
                   report.global_step, head_mm, -z(i), r.traction(1), r.r(0), r.beta,
-                  -1e3 * r.jump(1), 1e3 * r.jump(0),
-                  contact::to_string(contact::reported_status(r)), report.stage.c_str());
+                  -1e3 * r.jump(1), 1e3 * r.jump(0), to_string(reported_status(r)),
+                  report.stage.c_str());
     profiles_ << line;
   }
   profiles_.flush();

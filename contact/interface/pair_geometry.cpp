@@ -79,4 +79,15 @@ void compute_pair_geometry(const Mesh& mesh, Kinematics kin, Interface& iface,
   }
 }
 
+Eigen::Matrix3d pair_frame(const InterfacePair& p, int dim) {
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    Q(i, 0) = p.normal[i];
+    Q(i, 1) = p.tangent1[i];
+    Q(i, 2) = p.tangent2[i];
+  }
+  if (dim == 2) Q.col(2).setZero();
+  return Q;
+}
+
 } // namespace bipot::contact

@@ -5,6 +5,8 @@
 #include "fem/element/kinematics.hpp"
 #include "fem/mesh/mesh.hpp"
 
+#include <Eigen/Core>
+
 #include <string>
 
 namespace bipot::contact {
@@ -20,5 +22,9 @@ namespace bipot::contact {
 /// facets' normals cancel; bipot::Error for a facet node that is no pair's node_a.
 void compute_pair_geometry(const Mesh& mesh, Kinematics kin, Interface& iface,
                            const std::string& context = "");
+
+/// The pair's local frame as a 3 × 3 matrix with columns [n, t1, t2] (t2 zero in 2D): a
+/// local vector v has global components Q v.
+Eigen::Matrix3d pair_frame(const InterfacePair& p, int dim);
 
 } // namespace bipot::contact

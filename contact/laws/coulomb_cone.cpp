@@ -5,18 +5,6 @@
 
 namespace bipot::contact {
 
-const char* to_string(ContactStatus status) {
-  switch (status) {
-  case ContactStatus::Open:
-    return "open";
-  case ContactStatus::Stick:
-    return "stick";
-  case ContactStatus::Slip:
-    return "slip";
-  }
-  return "?";
-}
-
 ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar) {
   const Eigen::Index d = tau.size();
   assert((d == 2 || d == 3) && mu_bar >= 0.0);

@@ -3,27 +3,20 @@
 /// the point-wise map r ↦ Proj_{K_μ̄}(r − ρ[Δg_t + (g_n + μ̄‖Δg_t‖) n]) iterated by the
 /// bipotential Uzawa solver, with generalized Jacobians for a semi-smooth Newton solver.
 ///
-/// Local frame: a LocalVector holds the normal component first, then 1 (2D, axisymmetric) or
-/// 2 (3D) tangential components. Forces are tractions (kPa), jumps lengths (m).
+/// Local frame and units: fem/core/interface_point.hpp.
+
+#include "fem/core/interface_point.hpp"
 
 #include <Eigen/Core>
 
 namespace bipot::contact {
 
-/// A vector in the interface's local frame [normal, tangential...] (size 2 or 3, no heap).
-using LocalVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
-/// A matrix acting on local-frame vectors (2×2 or 3×3, no heap).
-using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
-
-/// Which branch of the projection (hence of the contact law) is active.
-enum class ContactStatus {
-  Open,  ///< separation: r = 0
-  Stick, ///< r = τ inside (or on) the cone
-  Slip   ///< r on the cone's boundary (frictionless: closed contact with free sliding)
-};
-
-/// "open", "stick", "slip".
-const char* to_string(ContactStatus status);
+// The local-frame types and the contact branch live in the FE core, which reports them
+// (fem/core/interface_point.hpp); spelled contact::X as well.
+using bipot::ContactStatus;
+using bipot::LocalMatrix;
+using bipot::LocalVector;
+using bipot::to_string;
 
 /// Result of project_onto_cone().
 struct ConeProjection {

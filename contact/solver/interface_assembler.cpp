@@ -1,61 +1,28 @@
 #include "contact/solver/interface_assembler.hpp"
 
+#include "contact/interface/pair_geometry.hpp"
 #include "fem/core/error.hpp"
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace bipot::contact {
 
-namespace {
-// Local frame as a dim × dim matrix with columns [n, t1 (, t2)].
-Eigen::Matrix3d pair_frame(const InterfacePair& p, int dim) {
-  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < 3; ++i) {
-    Q(i, 0) = p.normal[i];
-    Q(i, 1) = p.tangent1[i];
-    Q(i, 2) = p.tangent2[i];
-  }
-  if (dim == 2) Q.col(2).setZero();
-  return Q;
-}
-} // namespace
-
-PairStatus reported_status(const PairResult& result) {
-  if (result.beta > 0) return PairStatus::Bonded;
-  switch (result.status) {
-  case ContactStatus::Open:
-    return PairStatus::Open;
-  case ContactStatus::Stick:
-    return PairStatus::Stick;
-  case ContactStatus::Slip:
-    return PairStatus::Slip;
-  }
-  return PairStatus::Open;
-}
-
-const char* to_string(PairStatus status) {
-  switch (status) {
-  case PairStatus::Open:
-    return "open";
-  case PairStatus::Stick:
-    return "stick";
-  case PairStatus::Slip:
-    return "slip";
-  case PairStatus::Bonded:
-    return "bonded";
-  }
-  return "?";
-}
-
 InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLaw& law,
-                                       const DofMap& dofs, const DofDistribution& dist)
-    : iface_(iface), law_(&law), dofs_(dofs), dim_(dofs.dofs_per_node()),
-      shared_nodes_(shares_nodes(iface)), frozen_law_(law) {
+                                       const DofMap& dofs, const DofDistribution& dist,
+                                       ContactSolverOptions options,
+                                       std::vector<StageLaw> stage_laws)
+    : iface_(iface), law_(&law), options_(std::move(options)), stage_laws_(std::move(stage_laws)),
+      dofs_(dofs), dim_(dofs.dofs_per_node()), frozen_law_(law) {
+  if (!iface_.pairs.empty() && shares_nodes(iface_))
+    throw Error("interface '" + iface_.name +
+                "': its bodies share nodes, which only tying enforces (TiedInterface)");
   const std::size_t n = iface_.pairs.size();
   owned_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -83,7 +50,6 @@ InterfaceAssembler::InterfaceAssembler(const Interface& iface, const InterfaceLa
 }
 
 void InterfaceAssembler::add_to_pattern(SparsityPattern& pattern) const {
-  if (tied()) return;
   std::vector<Index> block;
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     if (!owned_[i]) continue;
@@ -94,8 +60,8 @@ void InterfaceAssembler::add_to_pattern(SparsityPattern& pattern) const {
   }
 }
 
-void InterfaceAssembler::set_augmentation(const ContactSolverOptions& options,
-                                          const std::vector<double>& diagonal_all) {
+void InterfaceAssembler::set_augmentation(const std::vector<double>& diagonal_all) {
+  const ContactSolverOptions& options = options_;
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     const InterfacePair& p = iface_.pairs[i];
     if (options.augmentation > 0) {
@@ -155,7 +121,6 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
   multiplier_change_ = 0;
   roundoff_force_ = 0;
   tangent_changed_ = false;
-  if (tied()) return;
   InterfaceResponseDerivatives d;
   force_.resize(iface_.pairs.size());
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
@@ -190,7 +155,6 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
 
 void InterfaceAssembler::add_to_system(const Constraints& constraints, SparseMatrix* K,
                                        DistributedVector& R) const {
-  if (tied()) return;
   const int n = 2 * dim_;
   std::vector<Index> block;
   std::vector<double> Kl(static_cast<std::size_t>(n) * n), Rl(n);
@@ -264,12 +228,14 @@ void InterfaceAssembler::commit() {
   }
 }
 
+bool InterfaceAssembler::enter_stage(std::size_t stage) {
+  bool changed = false;
+  for (const StageLaw& sl : stage_laws_)
+    if (sl.stage == stage) set_law(*sl.law), changed = true;
+  return changed;
+}
+
 void InterfaceAssembler::set_law(const InterfaceLaw& law) {
-  if (shared_nodes_ && !law.is_tied())
-    throw Error("interface '" + iface_.name +
-                "': its bodies share nodes, so it cannot take the "
-                "law '" +
-                law.name() + "' (the model splits an interface that any stage unties)");
   law_ = &law;
   frozen_law_.emplace(law);
   frozen_ = false;
@@ -279,25 +245,6 @@ void InterfaceAssembler::set_law(const InterfaceLaw& law) {
     results_[i].beta = beta;
   }
   tangent_changed_ = true;
-}
-
-void InterfaceAssembler::set_tied_forces(const std::vector<double>& force_all) {
-  force_.assign(iface_.pairs.size(), Eigen::Vector3d::Zero());
-  for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
-    const InterfacePair& p = iface_.pairs[i];
-    Eigen::Vector3d F = Eigen::Vector3d::Zero();
-    for (int c = 0; c < dim_; ++c)
-      F(c) = force_all[dofs_.dof(p.node_a, c)];
-    force_[i] = F;
-    const Eigen::Vector3d local = pair_frame(p, dim_).transpose() * F;
-    PairResult& res = results_[i];
-    res.traction = p.weight > 0 ? LocalVector(local.head(dim_) / p.weight)
-                                : LocalVector(LocalVector::Zero(dim_));
-    res.r = res.traction;
-    res.jump = LocalVector::Zero(dim_);
-    res.beta = 1.0;
-    res.status = ContactStatus::Stick;
-  }
 }
 
 void InterfaceAssembler::freeze_adhesion(const std::vector<double>& beta) {
@@ -318,9 +265,21 @@ std::vector<double> InterfaceAssembler::adhesion_at(const std::vector<double>& u
                                                     double dtau) const {
   std::vector<double> beta(committed_.size());
   for (std::size_t i = 0; i < committed_.size(); ++i)
-    beta[i] = tied() ? committed_[i].beta
-                     : law_->update_adhesion(committed_[i].beta, local_jump(i, u), dtau);
+    beta[i] = law_->update_adhesion(committed_[i].beta, local_jump(i, u), dtau);
   return beta;
+}
+
+bool InterfaceAssembler::adhesion_can_change() const {
+  if (law_->is_tied()) return false;
+  return std::any_of(committed_.begin(), committed_.end(),
+                     [](const InterfaceState& s) { return s.beta > 0.0; });
+}
+
+double InterfaceAssembler::adhesion_capacity() const {
+  double sum = 0;
+  for (std::size_t i = 0; i < committed_.size(); ++i)
+    sum += iface_.pairs[i].weight * law_->adhesion_energy(committed_[i].beta);
+  return sum;
 }
 
 std::array<double, 3> InterfaceAssembler::resultant() const {

@@ -11,6 +11,7 @@
 /// node a it owns.
 /// Against a rigid obstacle (node_b = rigid_obstacle) u_b is the obstacle's displacement,
 /// data set per increment (set_obstacle_displacement()); only node a's block is assembled.
+/// Bodies tied by shared nodes are the other enforcement, TiedInterface (tied_interface.hpp).
 
 #include "contact/interface/interface_mesh.hpp"
 #include "contact/laws/frozen_adhesion.hpp"
@@ -18,6 +19,7 @@
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/assembly/interface_enforcement.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/core/state_arrays.hpp"
 
@@ -33,119 +35,120 @@ class DofDistribution;
 
 namespace bipot::contact {
 
-/// What a pair looks like after an evaluation (output, tests).
-struct PairResult {
-  double beta = 0;
-  LocalVector jump;     ///< [g_n, g_t...] (m)
-  LocalVector r;        ///< irreversible part [p, r_t...] (kPa)
-  LocalVector traction; ///< total t (kPa)
-  ContactStatus status = ContactStatus::Open;
+// The output vocabulary lives in the FE core (fem/assembly/interface_enforcement.hpp);
+// spelled contact::X as well.
+using bipot::PairResult;
+using bipot::PairStatus;
+using bipot::reported_status;
+using bipot::to_string;
+
+/// A law a stage puts in force on an interface (stage `interfaces:`), not owned.
+struct StageLaw {
+  std::size_t stage = 0;
+  const InterfaceLaw* law = nullptr;
 };
 
-/// Status of a pair as the outputs report it (VTK `status` codes, profile names): while its
-/// adhesion is active (β > 0; tied pairs have β = 1) a pair is Bonded whatever branch the
-/// projection took — with μ̄ = μ(1 − β), a sound bond under shear sits on the frictionless
-/// "slip" branch although nothing slides. Otherwise its contact branch
-/// (docs/formulation.md §4).
-enum class PairStatus { Open = 0, Stick = 1, Slip = 2, Bonded = 3 };
-
-/// Bonded when result.beta > 0, else result.status.
-PairStatus reported_status(const PairResult& result);
-
-/// "open", "stick", "slip", "bonded".
-const char* to_string(PairStatus status);
-
-class InterfaceAssembler {
+class InterfaceAssembler final : public InterfaceEnforcement {
 public:
-  /// `law` is not owned. An interface whose bodies share its nodes (perfect bonding in every
-  /// stage) is not assembled; a tied law on split pairs holds their jumps (evaluate_tie()).
+  /// `law` and the stage laws are not owned. The interface's pairs must be split (distinct
+  /// nodes, or an obstacle): bodies sharing nodes are a TiedInterface. A tied law on split
+  /// pairs holds their jumps (evaluate_tie()). `options` give ρ (set_augmentation()).
   InterfaceAssembler(const Interface& iface, const InterfaceLaw& law, const DofMap& dofs,
-                     const DofDistribution& dist);
+                     const DofDistribution& dist, ContactSolverOptions options = {},
+                     std::vector<StageLaw> stage_laws = {});
 
   const Interface& interface() const { return iface_; }
-  /// Rigid bodies (not owned, null for none): pairs on a body's nodes put their blocks on
-  /// its reference node (the augmented-Lagrangian solvers; generalized_newton refuses them).
-  void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
+  const std::string& name() const override { return iface_.name; }
+  std::size_t num_pairs() const override { return iface_.pairs.size(); }
   const InterfaceLaw& law() const { return *law_; }
-  /// Tied by shared nodes: nothing to evaluate or assemble (forces from set_tied_forces()).
-  bool tied() const { return law_->is_tied() && shared_nodes_; }
   /// Puts `law` (not owned) in force from the next increment on (a stage's law change). The
   /// committed state carries over (docs/theory.md): jumps, slips and multipliers r̂ (a
   /// predictor for the new law) as they are; β becomes min(β, the new law's β0), and 1 under
   /// a tied law, which holds each pair's jump where it is.
   void set_law(const InterfaceLaw& law);
-  std::size_t num_pairs() const { return iface_.pairs.size(); }
+  /// set_law() with the law of stage `stage` among the stage laws, if it names one.
+  bool enter_stage(std::size_t stage) override;
 
+  bool acts_on_system() const override { return true; }
   /// Adds the [a, b] DOF block of every owned pair.
-  void add_to_pattern(SparsityPattern& pattern) const;
-  /// Chooses ρ per pair: the option's value if given, else factor × (the law's stiffness
+  void add_to_pattern(SparsityPattern& pattern) const override;
+  /// Pairs on a rigid body's nodes put their blocks on its reference node (the
+  /// augmented-Lagrangian solvers; generalized_newton refuses rigid bodies).
+  void set_rigid_bodies(const RigidBodyConstraints* rigid) override { rigid_ = rigid; }
+  /// Chooses ρ per pair: the options' value if given, else factor × (the law's stiffness
   /// scale, or 1/(A_i W_ii) from the bulk diagonal `diagonal_all` of all DOFs).
-  void set_augmentation(const ContactSolverOptions& options,
-                        const std::vector<double>& diagonal_all);
+  void set_augmentation(const std::vector<double>& diagonal_all) override;
 
-  /// Starts an increment: multipliers r̂ from the committed state, extrapolated along the
-  /// last committed increment by `extrapolation` (= this increment's size / the last one's;
-  /// 0 at the start of a stage). Only the starting guess changes, not the solution: under
+  /// Starts an increment: multipliers r̂ from the committed state, extrapolated along the last
+  /// committed increment by `extrapolation` (= this increment's size / the last one's; 0 at
+  /// the start of a stage). Only the starting guess changes, not the solution: under
   /// proportional loading it is already the converged r̂, which saves the augmented
   /// Lagrangian updates that would otherwise converge to it linearly.
-  void begin_increment(double extrapolation = 0.0);
+  void begin_increment(double extrapolation = 0.0) override;
   /// Evaluates every pair at `u` (all DOFs) with the current multipliers r̂: β, traction,
   /// Proj(τ), status, tangent. Pseudo-time step `dtau` (s).
-  void evaluate(const std::vector<double>& u, double dtau);
-  /// Adds the owned pairs' condensed contributions of the last evaluation to R (and K if
-  /// not null).
-  void add_to_system(const Constraints& constraints, SparseMatrix* K, DistributedVector& R) const;
+  void evaluate(const std::vector<double>& u, double dtau) override;
+  /// Adds the owned pairs' condensed contributions of the last evaluation to R (and K if not
+  /// null).
+  void add_to_system(const Constraints& constraints, SparseMatrix* K,
+                     DistributedVector& R) const override;
   /// max_i A_i ‖Proj(τ_i) − r̂_i‖ of the last evaluation (kN): how far the multipliers are
   /// from the bipotential fixed point.
-  double multiplier_change() const { return multiplier_change_; }
+  double multiplier_change() const override { return multiplier_change_; }
   /// r̂ ← Proj(τ) of the last evaluation (the Uzawa corrector).
-  void update_multipliers();
-  /// True when the interface tangent of the last evaluation differs from the one last put
-  /// into a matrix (then the matrix must be rebuilt).
-  bool tangent_changed() const { return tangent_changed_; }
-  /// Records the current tangent as the one in the matrix.
-  void mark_tangent_assembled();
-  /// Accepts the last evaluation as the converged state of the increment.
-  void commit();
-  /// Tied interfaces (perfect bonding), for output: `force_all` holds, for every DOF, the
-  /// force body 1 exerts on body 2 at shared nodes (the caller computes it from body 1's
-  /// cells: minus their internal force plus their body forces). Sets each pair's traction
-  /// Qᵀ F / A_i (kPa; r = traction, p = its normal part, compression positive), β = 1,
-  /// status stick (reported as bonded: reported_status()), and the resultant.
-  void set_tied_forces(const std::vector<double>& force_all);
-  /// Staggered fallback: evaluate() holds each pair's β at `beta` (no adhesion update, the
-  /// law wrapped in FrozenAdhesion) until unfreeze_adhesion().
-  void freeze_adhesion(const std::vector<double>& beta);
-  void unfreeze_adhesion() { frozen_ = false; }
-  /// β of every pair at the start of the increment (the committed state).
-  std::vector<double> committed_adhesion() const;
-  /// β the law gives at `u` from the committed state over a step `dtau` (the staggered
-  /// update), per pair.
-  std::vector<double> adhesion_at(const std::vector<double>& u, double dtau) const;
-  /// Displacement reset keeping forces (geostatic stage): the current jumps become an
-  /// offset, so that after the caller zeroes u the interface sees the same jumps.
-  void absorb_displacements();
+  void update_multipliers() override;
+  bool tangent_changed() const override { return tangent_changed_; }
+  void mark_tangent_assembled() override;
+  void commit() override;
+  /// Largest A_i ‖t_i‖ (kN).
+  double force_scale() const override;
+  /// Round-off in the interface forces of the last evaluation (kN, a 2-norm over pairs):
+  /// A_i ρ_i ĝ_i takes the difference of two displacements of size ‖u‖, so it carries an
+  /// error of about ε A_i ρ_i ‖u‖ that no iteration can remove. Grows with ρ.
+  double roundoff_force() const override { return roundoff_force_; }
+
+  /// β > 0 somewhere under a law that is not tied.
+  bool adhesion_can_change() const override;
+  std::vector<double> committed_adhesion() const override;
+  std::vector<double> adhesion_at(const std::vector<double>& u, double dtau) const override;
+  /// evaluate() holds each pair's β at `beta` (no adhesion update, the law wrapped in
+  /// FrozenAdhesion) until unfreeze_adhesion().
+  void freeze_adhesion(const std::vector<double>& beta) override;
+  void unfreeze_adhesion() override { frozen_ = false; }
+  /// Σ A_i w(β_i), w the law's adhesion_energy.
+  double adhesion_capacity() const override;
+
   /// Extra normal offset (m) added to every pair's g_n on top of the initial gap: a stage
   /// ramps it to prescribe an opening (> 0) or an interference (< 0), e.g. the radial
   /// expansion of a pile shaft at installation. Kept through displacement resets.
-  void set_gap_shift(double shift) { gap_shift_ = shift; }
-  double gap_shift() const { return gap_shift_; }
-  /// Obstacle interfaces: the rigid translation (m, global components, 0 beyond dim) of the
-  /// obstacle, i.e. u_b of every pair. Zeroed by absorb_displacements() (its jumps are kept).
-  void set_obstacle_displacement(const std::array<double, 3>& u) { obstacle_u_ = u; }
-  const std::array<double, 3>& obstacle_displacement() const { return obstacle_u_; }
+  void set_gap_shift(double shift) override { gap_shift_ = shift; }
+  double gap_shift() const override { return gap_shift_; }
+  bool has_obstacle() const override { return iface_.obstacle; }
+  /// Obstacle interfaces: the rigid translation of the obstacle, i.e. u_b of every pair.
+  /// Zeroed by absorb_displacements() (its jumps are kept).
+  void set_obstacle_displacement(const std::array<double, 3>& u) override { obstacle_u_ = u; }
+  std::array<double, 3> obstacle_displacement() const override { return obstacle_u_; }
+  /// The current jumps become an offset, so that after the caller zeroes u the interface
+  /// sees the same jumps.
+  void absorb_displacements() override;
 
-  /// The committed state for a checkpoint (interface_state.cpp; every rank holds every pair):
-  /// per pair β, jump, r, the r of the increment before, the multipliers, the offsets kept
-  /// through displacement resets and ρ; the gap shift. The law in force is not in it (a
-  /// stage's `interfaces:` gives it).
-  StateArrays save_state() const;
-  /// Restores save_state()'s arrays; the last evaluation becomes the committed state. Throws
-  /// bipot::Error naming the interface if an array is missing or sized for other pairs.
-  void load_state(const StateArrays& state);
+  /// The committed state (interface_state.cpp): per pair β, jump, r, the r of the increment
+  /// before, the multipliers, the offsets kept through displacement resets and ρ; the gap
+  /// shift. The law in force is not in it (a stage's `interfaces:` gives it).
+  StateArrays save_state() const override;
+  /// Restores save_state()'s arrays; the last evaluation becomes the committed state.
+  void load_state(const StateArrays& state) override;
 
-  /// Last evaluation of every pair.
-  const std::vector<PairResult>& results() const { return results_; }
+  /// The energy account (interface_energy.cpp): every pair's jump, traction, r and β at the
+  /// last recorded step, and the gap shift and obstacle position then.
+  void start_energy_account() override;
+  void record_energy(InterfaceEnergy& energy) override;
+  std::vector<double> save_energy_account() const override;
+  void load_energy_account(const std::vector<double>& values) override;
+
+  std::array<double, 3> resultant() const override;
+  const std::vector<PairResult>& results() const override { return results_; }
+
   /// Generalized derivatives of the last evaluation of pair `i` (local frame), for the exact
   /// generalized Newton (InterfaceNewtonSystem).
   const InterfaceResponseDerivatives& derivatives(std::size_t i) const { return derivatives_[i]; }
@@ -154,26 +157,25 @@ public:
   void set_multipliers(const std::vector<LocalVector>& r) { multiplier_ = r; }
   /// Local frame Q_i = [n, t1 (, t2)] of pair `i` (dim × dim, columns).
   LocalMatrix frame(std::size_t i) const;
-  /// Resultant force body 1 exerts on body 2 (kN, global components), last evaluation.
-  std::array<double, 3> resultant() const;
-  /// Largest A_i ‖t_i‖ (kN): a force scale for convergence checks.
-  double force_scale() const;
-  /// Round-off in the interface forces of the last evaluation (kN, a 2-norm over pairs):
-  /// A_i ρ_i ĝ_i takes the difference of two displacements of size ‖u‖, so it carries an
-  /// error of about ε A_i ρ_i ‖u‖ that no iteration can remove. Grows with ρ.
-  double roundoff_force() const { return roundoff_force_; }
 
 private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
   /// Component c of body 2's displacement at pair p: node b's, or the obstacle's.
   double u_b(const InterfacePair& p, int c, const std::vector<double>& u) const;
 
+  /// What the energy account remembers of a pair.
+  struct AccountedPair {
+    LocalVector jump, traction, r;
+    double beta = 0;
+  };
+
   const Interface& iface_;
   const InterfaceLaw* law_;
+  ContactSolverOptions options_;
+  std::vector<StageLaw> stage_laws_;
   const DofMap& dofs_;
   const RigidBodyConstraints* rigid_ = nullptr;
   int dim_;
-  bool shared_nodes_ = false;
   std::vector<bool> owned_;
   std::vector<double> rho_;
   std::vector<InterfaceState> committed_;
@@ -192,6 +194,9 @@ private:
   bool frozen_ = false;
   std::vector<double> frozen_beta_;
   bool tangent_changed_ = true;
+  std::vector<AccountedPair> accounted_;
+  double accounted_shift_ = 0;
+  std::array<double, 3> accounted_obstacle_{0, 0, 0};
 };
 
 } // namespace bipot::contact

@@ -30,8 +30,7 @@ std::string condensed_size_problem(const CondensedSize& size, const std::string&
 InterfaceNewtonSystem::InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces,
                                              const DofMap& dofs)
     : dim_(dofs.dofs_per_node()) {
-  for (InterfaceAssembler* ia : interfaces)
-    if (!ia->tied()) interfaces_.push_back(ia);
+  interfaces_ = interfaces;
   // A node may belong to two interfaces (the corner of a pile's shaft and toe): one x each.
   for (InterfaceAssembler* ia : interfaces_)
     for (const InterfacePair& p : ia->interface().pairs)

@@ -21,6 +21,7 @@
 /// step (see add()).
 
 #include "contact/solver/interface_assembler.hpp"
+#include "fem/assembly/condensed_interface_system.hpp"
 
 #include <Eigen/Dense>
 
@@ -45,36 +46,34 @@ constexpr Index max_condensed_unknowns = 12000;
 /// The message refusing a larger one ("" when it fits), prefixed by `where`.
 std::string condensed_size_problem(const CondensedSize& size, const std::string& where);
 
-class InterfaceNewtonSystem {
+class InterfaceNewtonSystem final : public CondensedInterfaceSystem {
 public:
-  /// The non-tied interfaces among `interfaces` (not owned) take part.
+  /// Over `interfaces` (not owned).
   InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces, const DofMap& dofs);
 
-  /// Global DOFs of I, sorted: rows and columns of x.
-  const std::vector<Index>& dofs() const { return dofs_; }
-  Index num_dofs() const { return static_cast<Index>(dofs_.size()); }
-  Index num_multipliers() const { return num_multipliers_; }
-  Index size() const { return num_dofs() + num_multipliers_; }
+  const std::vector<Index>& dofs() const override { return dofs_; }
+  Index num_multipliers() const override { return num_multipliers_; }
 
   /// λ = A r̂ from the interfaces' current multipliers.
-  Eigen::VectorXd multipliers() const;
+  Eigen::VectorXd multipliers() const override;
   /// r̂ = λ / A on the interfaces, for their next evaluate().
-  void set_multipliers(const Eigen::VectorXd& lambda) const;
+  void set_multipliers(const Eigen::VectorXd& lambda) const override;
 
   /// For the interfaces' last evaluate(): adds f_c to F.head(num_dofs()) and sets
   /// F.tail(num_multipliers()) to F_λ; with J, adds their derivatives with respect to
   /// (x, λ). Rows of I-DOFs flagged in `constrained` (same order as dofs()) get no interface
   /// term: their equation prescribes the DOF (the reaction takes the interface force).
-  void add(const std::vector<bool>& constrained, Eigen::VectorXd& F, Eigen::MatrixXd* J) const;
+  void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+           Eigen::MatrixXd* J) const override;
 
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
-  double multiplier_residual(const Eigen::VectorXd& F) const;
+  double multiplier_residual(const Eigen::VectorXd& F) const override;
 
   /// Σ_i A_i [E(β_i,committed) − E(β_i)], E = the law's adhesion_energy: the energy that
   /// adhesion loss has released since the last converged increment, at the interfaces' last
   /// evaluate() (kJ). With grad, adds its derivatives with respect to x (through β's
   /// dependence on the jump): the row a dissipation-controlled step borders J with.
-  double released_adhesion_energy(Eigen::VectorXd* grad) const;
+  double released_adhesion_energy(Eigen::VectorXd* grad) const override;
 
 private:
   struct PairSlots {

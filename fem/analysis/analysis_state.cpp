@@ -70,8 +70,9 @@ void StaticAnalysis::Impl::load_state(const StateArrays& state) {
     interfaces[k]->set_obstacle_displacement(obstacles[k]);
   solid.load_state(with_prefix(state, "solid."));
   // The laws the done stages put in force, then the interface states saved under them.
-  for (const auto& sl : model.stage_laws)
-    if (sl.stage < stages_done + (within ? 1 : 0)) interfaces[sl.interface]->set_law(*sl.law);
+  for (std::size_t s = 0; s < stages_done + (within ? 1 : 0); ++s)
+    for (const auto& ia : interfaces)
+      ia->enter_stage(s);
   for (std::size_t k = 0; k < interfaces.size(); ++k)
     interfaces[k]->load_state(with_prefix(state, "interface." + std::to_string(k) + "."));
   // The energy balance so far (energy.csv continues it).

@@ -6,9 +6,12 @@
 
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/analysis/interface_module.hpp"
 #include "fem/core/material.hpp"
 #include "fem/core/registry.hpp"
 #include "fem/input/input_catalogue.hpp"
+
+#include <memory>
 
 namespace bipot {
 
@@ -18,6 +21,9 @@ struct Catalogue {
   /// The contact algorithms are the toolkit's own (fem/analysis drives them by type), so
   /// this one is fixed: its entries only turn validated options into ContactSolverOptions.
   const Registry<contact::ContactSolverOptions>& contact_solvers = contact::contact_solvers();
+  /// Enforces the interfaces of the models built from this catalogue (the built-in one:
+  /// apps/catalogue/contact_module.cpp).
+  std::shared_ptr<const InterfaceModule> interface_module;
 
   operator InputCatalogue() const { return {materials, interface_laws, contact_solvers}; }
 };

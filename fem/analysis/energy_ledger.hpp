@@ -1,16 +1,15 @@
 #pragma once
 /// The energy balance of a run, step by step (`energy.csv`): the work of the external forces
 /// and of prescribed interface interferences against the energy stored in the bodies and the
-/// interfaces and what the interfaces dissipate. Every work term is the trapezoidal rule over
-/// the increment, exact for a linear bulk, for elastic interface springs at constant β, for
-/// friction at constant force and for unilateral contact; what is left (`balance_error`) is
-/// the trapezoidal rule's error on the adhesive springs while β changes within a step — the
+/// interfaces and what the interfaces dissipate. The bulk terms are the trapezoidal rule over
+/// the increment, exact for a linear bulk; each interface keeps its own account
+/// (InterfaceEnforcement::record_energy). What is left (`balance_error`) is the trapezoidal
+/// rule's error on the adhesive springs while β changes within a step — the
 /// time-discretisation error of the energy, not a solver error (docs/theory.md).
 
-#include "contact/solver/interface_assembler.hpp"
+#include "fem/assembly/interface_enforcement.hpp"
 #include "fem/core/state_arrays.hpp"
 
-#include <array>
 #include <memory>
 #include <vector>
 
@@ -32,7 +31,8 @@ struct EnergyTotals {
 
 class EnergyLedger {
 public:
-  explicit EnergyLedger(const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces);
+  /// Starts the interfaces' accounts at their committed state.
+  explicit EnergyLedger(const std::vector<std::unique_ptr<InterfaceEnforcement>>& ifaces);
 
   /// After a converged increment, before the interfaces commit: u (all DOFs), the external
   /// forces (loads + reactions) and the internal forces at u, all replicated.
@@ -42,22 +42,15 @@ public:
   void reset_displacements();
   const EnergyTotals& totals() const { return totals_; }
   /// Its whole state for a checkpoint (energy_ledger_state.cpp): the totals, the last step's
-  /// u and forces, every pair's jump, traction, r and β, and the gap shifts.
+  /// u and forces, and every interface's account.
   StateArrays save_state() const;
   /// Restores save_state()'s arrays; throws bipot::Error if they do not fit.
   void load_state(const StateArrays& state);
 
 private:
-  struct PairState {
-    contact::LocalVector jump, traction, r;
-    double beta = 0;
-  };
-  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& ifaces_;
+  const std::vector<std::unique_ptr<InterfaceEnforcement>>& ifaces_;
   EnergyTotals totals_;
   std::vector<double> u_, external_, internal_;
-  std::vector<std::vector<PairState>> pairs_;   ///< per interface, per pair, at the last step
-  std::vector<double> shift_;                   ///< gap shift per interface at the last step
-  std::vector<std::array<double, 3>> obstacle_; ///< obstacle displacement at the last step
 };
 
 } // namespace bipot

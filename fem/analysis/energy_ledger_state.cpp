@@ -13,15 +13,8 @@ StateArrays EnergyLedger::save_state() const {
   out["u"] = u_;
   out["external"] = external_;
   out["internal"] = internal_;
-  out["shift"] = shift_;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    std::vector<double>& v = out["pairs." + std::to_string(k)];
-    for (const PairState& p : pairs_[k]) {
-      v.push_back(p.beta);
-      for (const auto* x : {&p.jump, &p.traction, &p.r})
-        v.insert(v.end(), x->data(), x->data() + x->size());
-    }
-  }
+  for (std::size_t k = 0; k < ifaces_.size(); ++k)
+    out["interface." + std::to_string(k)] = ifaces_[k]->save_energy_account();
   return out;
 }
 
@@ -37,22 +30,8 @@ void EnergyLedger::load_state(const StateArrays& state) {
   u_ = get("u");
   external_ = get("external");
   internal_ = get("internal");
-  if (get("shift").size() != shift_.size()) throw Error("energy state: 'shift' has another size");
-  shift_ = get("shift");
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const std::vector<double>& v = get("pairs." + std::to_string(k));
-    std::size_t at = 0;
-    for (PairState& p : pairs_[k]) {
-      const auto n = static_cast<std::size_t>(p.jump.size());
-      if (at + 1 + 3 * n > v.size()) throw Error("energy state: too few pair values");
-      p.beta = v[at++];
-      for (auto* x : {&p.jump, &p.traction, &p.r}) {
-        for (std::size_t i = 0; i < n; ++i)
-          (*x)(static_cast<Eigen::Index>(i)) = v[at++];
-      }
-    }
-    if (at != v.size()) throw Error("energy state: too many pair values");
-  }
+  for (std::size_t k = 0; k < ifaces_.size(); ++k)
+    ifaces_[k]->load_energy_account(get("interface." + std::to_string(k)));
 }
 
 } // namespace bipot

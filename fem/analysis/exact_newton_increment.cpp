@@ -1,6 +1,6 @@
 // One load increment with `generalized_newton` (StaticAnalysis::Impl): the bulk is condensed
 // onto the interface DOFs I (SchurComplementSolver), the exact generalized Newton runs on the
-// small dense system of I and the interface multipliers (contact::InterfaceNewtonSystem),
+// small dense system of I and the interface multipliers (CondensedInterfaceSystem),
 // and one back substitution recovers the rest of the mesh.
 //
 // With a linear bulk, the full system of the increment, K du = R0 + f_c(u + du) (R0 the
@@ -20,8 +20,7 @@ using namespace analysis_detail;
 namespace {
 // max_i ‖F_λi‖ (kN): how far the multipliers are from the interface law at the interfaces'
 // last evaluate().
-double law_residual(const contact::InterfaceNewtonSystem& sys,
-                    const std::vector<bool>& constrained) {
+double law_residual(const CondensedInterfaceSystem& sys, const std::vector<bool>& constrained) {
   Eigen::VectorXd F = Eigen::VectorXd::Zero(sys.size());
   sys.add(constrained, F, nullptr);
   return sys.multiplier_residual(F);
@@ -31,7 +30,7 @@ double law_residual(const contact::InterfaceNewtonSystem& sys,
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
                                                  PathStep* path) {
   const contact::ContactSolverOptions& copt = model.contact_solver;
-  const contact::InterfaceNewtonSystem& sys = *newton_system;
+  const CondensedInterfaceSystem& sys = *newton_system;
   const Index nI = sys.num_dofs(), n = sys.size();
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);

@@ -272,6 +272,10 @@ Model build_model(const ProblemSpec& spec, const Catalogue& catalogue) {
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
   if (!problems.empty()) throw InputError(problems);
   split_interfaces(model, catalogue);
+  if (!model.interfaces.empty() && !catalogue.interface_module)
+    throw InputError({spec.interfaces.front().where +
+                      ": this catalogue has no interface module to enforce interfaces"});
+  model.interface_module = catalogue.interface_module;
   restrict_sets_to_regions(spec.mesh, model.mesh);
   check_initial_stress_admissible(model);
   add_rigid_bodies(model); // last: its reference nodes end the mesh

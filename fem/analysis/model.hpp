@@ -5,6 +5,7 @@
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/analysis/catalogue.hpp"
+#include "fem/analysis/interface_module.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/core/material.hpp"
 #include "fem/element/kinematics.hpp"
@@ -33,6 +34,8 @@ struct Model {
   contact::ContactSolverOptions contact_solver;
   /// In input order; their reference nodes are the mesh's last nodes (two per body).
   std::vector<RigidBody> rigid_bodies;
+  /// Enforces the interfaces (the catalogue's; null for a model without interfaces).
+  std::shared_ptr<const InterfaceModule> interface_module;
 };
 
 /// Adds the rigid bodies of model.spec to the model (rigid_bodies.cpp): their nodes, and two

@@ -12,19 +12,18 @@ void StaticAnalysis::Impl::begin_obstacle_stage(const StageSpec& stage) {
     // An obstacle the stage does not name stays where it is (like a gap shift).
     obstacle_start[k] = obstacle_target[k] = interfaces[k]->obstacle_displacement();
     for (const auto& d : stage.obstacle_displacements)
-      if (d.interface == model.interfaces[k].name)
+      if (d.interface == interfaces[k]->name())
         for (std::size_t c = 0; c < d.value.size(); ++c)
           obstacle_target[k][c] = d.value[c];
-    if (!model.interfaces[k].obstacle || !interfaces[k]->tied()) continue;
-    for (const auto& p : model.interfaces[k].pairs)
+    for (Index node : interfaces[k]->held_nodes())
       for (int c = 0; c < dim; ++c)
-        target[dofs.dof(p.node_a, c)] = obstacle_target[k][c];
+        target[dofs.dof(node, c)] = obstacle_target[k][c];
   }
 }
 
 void StaticAnalysis::Impl::move_obstacles(double lambda) {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
-    if (!model.interfaces[k].obstacle) continue;
+    if (!interfaces[k]->has_obstacle()) continue;
     std::array<double, 3> u{0, 0, 0};
     for (int c = 0; c < 3; ++c)
       u[c] = obstacle_start[k][c] + lambda * (obstacle_target[k][c] - obstacle_start[k][c]);
@@ -34,14 +33,14 @@ void StaticAnalysis::Impl::move_obstacles(double lambda) {
 
 void StaticAnalysis::Impl::tied_obstacle_forces() {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
-    if (!model.interfaces[k].obstacle || !interfaces[k]->tied()) continue;
+    if (interfaces[k]->transmitted_force() != TransmittedForce::FromHeldNodes) continue;
     // The obstacle is the support of the nodes it holds: the body pushes on it with the
     // opposite of their reactions.
     std::vector<double> force(reaction_all.size(), 0.0);
-    for (const auto& p : model.interfaces[k].pairs)
+    for (Index node : interfaces[k]->held_nodes())
       for (int c = 0; c < dim; ++c)
-        force[dofs.dof(p.node_a, c)] = -reaction_all[dofs.dof(p.node_a, c)];
-    interfaces[k]->set_tied_forces(force);
+        force[dofs.dof(node, c)] = -reaction_all[dofs.dof(node, c)];
+    interfaces[k]->set_transmitted_forces(force);
   }
 }
 

@@ -4,7 +4,7 @@
 
 namespace bipot {
 
-double PathStep::constraint(const contact::InterfaceNewtonSystem& sys, const Eigen::VectorXd& z,
+double PathStep::constraint(const CondensedInterfaceSystem& sys, const Eigen::VectorXd& z,
                             Eigen::VectorXd* grad) const {
   const Index nI = sys.num_dofs(), n = sys.size();
   if (kind == Kind::ArcLength) {

@@ -7,9 +7,8 @@
 
 namespace bipot {
 
-PathControl::PathControl(
-    const StageSpec& stage, const contact::InterfaceNewtonSystem* sys,
-    const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces)
+PathControl::PathControl(const StageSpec& stage, const CondensedInterfaceSystem* sys,
+                         const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces)
     : stage_(stage), sys_(sys), interfaces_(interfaces),
       max_increments_(stage.control.max_increments > 0 ? stage.control.max_increments
                                                        : 20 * stage.increments),
@@ -35,12 +34,8 @@ PathControl::~PathControl() = default;
 
 double PathControl::adhesion_capacity() const {
   double sum = 0;
-  for (const auto& ia : interfaces_) {
-    if (ia->tied()) continue;
-    const std::vector<double> beta = ia->committed_adhesion();
-    for (std::size_t i = 0; i < ia->num_pairs(); ++i)
-      sum += ia->interface().pairs[i].weight * ia->law().adhesion_energy(beta[i]);
-  }
+  for (const auto& ia : interfaces_)
+    sum += ia->adhesion_capacity();
   return sum;
 }
 

@@ -3,7 +3,8 @@
 /// control the next increment uses, the step length (arc length or dissipated energy) and
 /// its adaptation, and the switches between the ramp and dissipation control.
 
-#include "contact/solver/interface_newton_system.hpp"
+#include "fem/assembly/condensed_interface_system.hpp"
+#include "fem/assembly/interface_enforcement.hpp"
 #include "fem/input/problem_spec.hpp"
 
 #include <Eigen/Dense>
@@ -20,8 +21,8 @@ class PathControl {
 public:
   /// `sys` is null when the model has no contact interface (then the stage must be a ramp:
   /// input checks refuse the rest).
-  PathControl(const StageSpec& stage, const contact::InterfaceNewtonSystem* sys,
-              const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces);
+  PathControl(const StageSpec& stage, const CondensedInterfaceSystem* sys,
+              const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces);
   ~PathControl();
 
   /// The next increment is traced (λ an unknown) rather than ramped.
@@ -62,8 +63,8 @@ private:
   double adhesion_capacity() const;
 
   const StageSpec& stage_;
-  const contact::InterfaceNewtonSystem* sys_;
-  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces_;
+  const CondensedInterfaceSystem* sys_;
+  const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces_;
   Mode mode_ = Mode::Ramp;
   bool finished_ = false, traced_last_ = false;
   int max_increments_;

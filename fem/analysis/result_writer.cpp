@@ -228,7 +228,7 @@ void ResultWriter::write_interfaces(const StepReport& report, const StaticAnalys
       }
       beta.values.push_back(r.beta);
       // 0 open, 1 stick, 2 slip, 3 bonded (β > 0)
-      status.values.push_back(static_cast<double>(contact::reported_status(r)));
+      status.values.push_back(static_cast<double>(reported_status(r)));
     }
     std::vector<Index> cells(interface_meshes_[k].num_cells());
     for (Index c = 0; c < interface_meshes_[k].num_cells(); ++c)

@@ -11,9 +11,8 @@ using namespace analysis_detail;
 // surface loads on body-1 facets at interface nodes are not separated out.
 void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
-    const auto& spec = model.spec.interfaces[k];
-    if (!interfaces[k]->tied() || spec.between.size() != 2) continue; // obstacles: below
-    const int region = model.mesh.regions.at(spec.between[0]);
+    if (interfaces[k]->transmitted_force() != TransmittedForce::FromBody1) continue;
+    const int region = model.mesh.regions.at(model.spec.interfaces[k].between[0]);
     DistributedVector& f = du; // scratch: du is not needed between increments
     f.set_zero();
     solid.internal_force(u, f, region);
@@ -32,7 +31,7 @@ void StaticAnalysis::Impl::tied_interface_forces(double gravity_factor) {
     std::vector<double> force = f.gather_all();
     for (const auto& kv : target)
       force[kv.first] += reaction_all[kv.first];
-    interfaces[k]->set_tied_forces(force);
+    interfaces[k]->set_transmitted_forces(force);
   }
 }
 
@@ -73,15 +72,15 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     for (std::size_t k = 0; k < interfaces.size(); ++k) {
       gap_start[k] = gap_target[k] = interfaces[k]->gap_shift();
       for (const auto& gap : stage.interface_gaps)
-        if (gap.interface == model.interfaces[k].name) gap_target[k] = gap.value;
+        if (gap.interface == interfaces[k]->name()) gap_target[k] = gap.value;
     }
 
-    // Laws the stage puts in force (the state carries over: InterfaceAssembler::set_law); ρ
-    // follows the new laws' stiffness.
+    // Laws the stage puts in force (the state carries over); ρ follows the new laws'
+    // stiffness.
     bool law_changed = false;
-    for (const auto& sl : model.stage_laws)
-      if (sl.stage == s && !resuming)
-        interfaces[sl.interface]->set_law(*sl.law), law_changed = true;
+    if (!resuming)
+      for (const auto& ia : interfaces)
+        law_changed = ia->enter_stage(s) || law_changed;
     if (law_changed && has_contact) {
       choose_augmentation();
       schur_ready = false; // K was overwritten by the unconstrained bulk matrix
@@ -187,11 +186,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           }
           // The fallback holds β and updates it: without adhesion left anywhere it would only
           // repeat the failed solve.
-          beta_can_change = std::any_of(interfaces.begin(), interfaces.end(), [](const auto& ia) {
-            const std::vector<double> beta = ia->committed_adhesion();
-            return !ia->law().is_tied() &&
-                   std::any_of(beta.begin(), beta.end(), [](double b) { return b > 0.0; });
-          });
+          beta_can_change = std::any_of(interfaces.begin(), interfaces.end(),
+                                        [](const auto& ia) { return ia->adhesion_can_change(); });
           if (has_contact && beta_can_change) {
             IncrementLog staggered;
             converged = solve_increment_staggered(lambda, dtau, staggered);
@@ -358,8 +354,7 @@ std::vector<double> StaticAnalysis::rigid_body_state(std::size_t body) const {
   return out;
 }
 
-const std::vector<std::unique_ptr<contact::InterfaceAssembler>>&
-StaticAnalysis::interfaces() const {
+const std::vector<std::unique_ptr<InterfaceEnforcement>>& StaticAnalysis::interfaces() const {
   return impl_->interfaces;
 }
 

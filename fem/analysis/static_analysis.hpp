@@ -8,10 +8,10 @@
 /// staggered iteration (β held, solve, update β, repeat) looks for the equilibrium after a
 /// debonding jump, and only then does the run stop.
 
-#include "contact/solver/interface_assembler.hpp"
 #include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/assembly/dof_map.hpp"
+#include "fem/assembly/interface_enforcement.hpp"
 #include "fem/core/error.hpp"
 #include "fem/core/state_arrays.hpp"
 
@@ -149,8 +149,8 @@ public:
   /// moments, kN·m about the reference point): the applied load, or the reaction of a
   /// prescribed component.
   std::vector<double> rigid_body_state(std::size_t body) const;
-  /// Interface states of the last converged increment (one assembler per interface).
-  const std::vector<std::unique_ptr<contact::InterfaceAssembler>>& interfaces() const;
+  /// Interface states of the last converged increment (one enforcement per interface).
+  const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces() const;
   /// Committed cell averages of strain and stress for the cells this rank owns.
   void cell_results(std::vector<Index>& cells, std::vector<double>& strain,
                     std::vector<double>& stress) const;

@@ -85,9 +85,10 @@ StageForces run(const std::string& text) {
     for (const auto& r : ia.results()) {
       stick += r.status == contact::ContactStatus::Stick;
       if (r.status == contact::ContactStatus::Slip)
-        cone = std::max(cone, std::abs(r.r.tail(r.r.size() - 1).norm() -
-                                       ia.law().friction_coefficient(r.beta) * r.r(0)) /
-                                  r.r(0));
+        cone = std::max(cone,
+                        std::abs(r.r.tail(r.r.size() - 1).norm() -
+                                 model.interface_laws[0]->friction_coefficient(r.beta) * r.r(0)) /
+                            r.r(0));
     }
     out.sticking.push_back(stick);
     out.cone_error.push_back(cone);

@@ -3,12 +3,13 @@
 /// stage driver and the public accessors) and increment_solver.cpp (the iterations of one
 /// increment: Newton/Uzawa, line search, the staggered fallback).
 
-#include "contact/solver/interface_newton_system.hpp"
 #include "fem/analysis/initial_stress.hpp"
 #include "fem/analysis/path_control.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
+#include "fem/assembly/condensed_interface_system.hpp"
 #include "fem/assembly/constraints.hpp"
+#include "fem/assembly/interface_enforcement.hpp"
 #include "fem/assembly/load_assembler.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
@@ -108,7 +109,7 @@ struct PathStep {
 
   /// g and, with grad (size n + 1), its gradient with respect to (x, λ_c, Δλ), at z after
   /// the interfaces were evaluated there.
-  double constraint(const contact::InterfaceNewtonSystem& sys, const Eigen::VectorXd& z,
+  double constraint(const CondensedInterfaceSystem& sys, const Eigen::VectorXd& z,
                     Eigen::VectorXd* grad) const;
   /// The constraint's own scale (L or Δτ): |g| ≤ tolerance × scale is converged.
   double scale() const { return kind == Kind::ArcLength ? length : dissipation; }
@@ -125,8 +126,8 @@ struct StaticAnalysis::Impl {
   std::vector<bool> cell_owned;
   SolidAssembler solid;
   LoadAssembler loads;
-  std::vector<std::unique_ptr<contact::InterfaceAssembler>> interfaces;
-  bool has_contact = false; ///< some interface is not tied: the tangent changes
+  std::vector<std::unique_ptr<InterfaceEnforcement>> interfaces;
+  bool has_contact = false; ///< some interface acts on the system: the tangent changes
   std::unique_ptr<SparseMatrix> K;
   DistributedVector R, du, F_prev, F_cur, F_step, reaction;
   LinearSolver solver;
@@ -144,7 +145,7 @@ struct StaticAnalysis::Impl {
   double reaction_scale = 0;
   // generalized_newton: the bulk condensed onto the interface DOFs, refactorised only when
   // the bulk tangent or the constrained DOFs change.
-  std::unique_ptr<contact::InterfaceNewtonSystem> newton_system;
+  std::unique_ptr<CondensedInterfaceSystem> newton_system;
   SchurComplementSolver schur;
   ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
   bool schur_ready = false;
@@ -183,11 +184,13 @@ struct StaticAnalysis::Impl {
         F_step(dist), reaction(dist),
         solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)), u(dofs.num_dofs(), 0.0),
         linear(analysis_detail::all_linear(m)) {
-    for (std::size_t k = 0; k < m.interfaces.size(); ++k) {
-      interfaces.push_back(std::make_unique<contact::InterfaceAssembler>(
-          m.interfaces[k], *m.interface_laws[k], dofs, dist));
-      has_contact = has_contact || !interfaces.back()->tied();
+    if (m.interface_module) {
+      EnforcedInterfaces enforced = m.interface_module->enforce(m, dofs, dist);
+      interfaces = std::move(enforced.interfaces);
+      newton_system = std::move(enforced.condensed);
     }
+    for (const auto& ia : interfaces)
+      has_contact = has_contact || ia->acts_on_system();
     SparsityPattern pattern;
     if (!rigid.empty()) solid.set_rigid_bodies(&rigid);
     solid.add_to_pattern(pattern);
@@ -210,18 +213,6 @@ struct StaticAnalysis::Impl {
     if (!m.spec.initial_stress.empty()) solid.set_initial_stress(initial_stress_function(m));
     F_prev.set_zero();
     if (has_contact) choose_augmentation();
-    if (has_contact && model.contact_solver.exact_newton()) {
-      std::vector<contact::InterfaceAssembler*> all;
-      for (const auto& ia : interfaces)
-        all.push_back(ia.get());
-      newton_system = std::make_unique<contact::InterfaceNewtonSystem>(all, dofs);
-      // Refused at `check` already (apps/common/checked_model.cpp); a model built otherwise
-      // gets the same message here.
-      const std::string too_large = contact::condensed_size_problem(
-          {newton_system->num_dofs(), newton_system->num_multipliers()},
-          model.spec.contact_solver.where);
-      if (!too_large.empty()) throw InputError({too_large});
-    }
   }
 
   // ρ per pair from the bulk stiffness diagonal (one bulk assembly, before any constraint).
@@ -233,7 +224,7 @@ struct StaticAnalysis::Impl {
     R.finish_assembly();
     const std::vector<double> diagonal = K->diagonal().gather_all();
     for (const auto& ia : interfaces)
-      ia->set_augmentation(model.contact_solver, diagonal);
+      ia->set_augmentation(diagonal);
   }
 
   std::vector<Index> set_nodes(const std::string& name) const {

@@ -1,0 +1,89 @@
+// InterfaceAssembler's share of the run's energy balance (fem/analysis/energy_ledger.hpp):
+// each work term is the trapezoidal rule over the increment, exact for elastic springs at
+// constant β, for friction at constant force and for unilateral contact; what is left is the
+// trapezoidal rule's error on the adhesive springs while β changes within a step
+// (docs/theory.md, "Energy balance").
+#include "contact/solver/interface_assembler.hpp"
+
+#include "fem/core/error.hpp"
+
+namespace bipot::contact {
+
+void InterfaceAssembler::start_energy_account() {
+  accounted_.resize(iface_.pairs.size());
+  for (std::size_t i = 0; i < accounted_.size(); ++i) {
+    AccountedPair& p = accounted_[i];
+    p.jump = p.traction = p.r = LocalVector::Zero(dim_);
+    // The unloaded jump: the pair's gap (no force acts on it yet).
+    p.jump(0) = iface_.initial_gap + iface_.pairs[i].gap + gap_shift_;
+    p.beta = committed_[i].beta;
+  }
+  accounted_shift_ = gap_shift_;
+  accounted_obstacle_ = obstacle_u_;
+}
+
+void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
+  const double w = law_->adhesion_energy(1.0) - law_->adhesion_energy(0.0);
+  const double dshift = gap_shift_ - accounted_shift_;
+  accounted_shift_ = gap_shift_;
+  // A moving obstacle is body 2 of its pairs: its displacement moves every jump.
+  Eigen::VectorXd d_obstacle = Eigen::VectorXd::Zero(dim_);
+  if (iface_.obstacle)
+    for (int c = 0; c < dim_; ++c)
+      d_obstacle(c) = obstacle_u_[c] - accounted_obstacle_[c];
+  accounted_obstacle_ = obstacle_u_;
+  for (std::size_t i = 0; i < accounted_.size(); ++i) {
+    const double A = iface_.pairs[i].weight;
+    const PairResult& now = results_[i];
+    AccountedPair& old = accounted_[i];
+    const LocalVector dg = now.jump - old.jump;
+    // Work done on the interface, −t·dg (t compression positive, g opening positive), split
+    // into its irreversible part r and the adhesive springs a = t − r.
+    energy.contact_work -= 0.5 * A * (old.r + now.r).dot(dg);
+    const LocalVector a = now.traction - now.r;
+    energy.stored -= 0.5 * A * a.dot(now.jump);
+    // β E = −a·g / β: the driving force of the β update at the end of the step (backward
+    // Euler, as the law integrates it).
+    const double dbeta = old.beta - now.beta;
+    energy.adhesion_dissipation += A * w * dbeta;
+    if (dbeta != 0.0 && now.beta > 0)
+      energy.viscous_dissipation += A * (-a.dot(now.jump) / now.beta - w) * dbeta;
+    // A prescribed interference moves the normal jump without moving the bodies.
+    energy.interference_work -= 0.5 * A * (old.traction(0) + now.traction(0)) * dshift;
+    if (iface_.obstacle)
+      energy.interference_work -=
+          0.5 * A * (old.traction + now.traction).dot(frame(i).transpose() * d_obstacle);
+    old = {now.jump, now.traction, now.r, now.beta};
+  }
+}
+
+std::vector<double> InterfaceAssembler::save_energy_account() const {
+  std::vector<double> v = {accounted_shift_, accounted_obstacle_[0], accounted_obstacle_[1],
+                           accounted_obstacle_[2]};
+  for (const AccountedPair& p : accounted_) {
+    v.push_back(p.beta);
+    for (const auto* x : {&p.jump, &p.traction, &p.r})
+      v.insert(v.end(), x->data(), x->data() + x->size());
+  }
+  return v;
+}
+
+void InterfaceAssembler::load_energy_account(const std::vector<double>& v) {
+  start_energy_account(); // sizes every pair's vectors
+  const std::size_t n = static_cast<std::size_t>(dim_);
+  if (v.size() != 4 + accounted_.size() * (1 + 3 * n))
+    throw Error("interface '" + iface_.name + "': the energy state has " +
+                std::to_string(v.size()) + " values, its " + std::to_string(accounted_.size()) +
+                " pairs need " + std::to_string(4 + accounted_.size() * (1 + 3 * n)));
+  accounted_shift_ = v[0];
+  accounted_obstacle_ = {v[1], v[2], v[3]};
+  std::size_t at = 4;
+  for (AccountedPair& p : accounted_) {
+    p.beta = v[at++];
+    for (auto* x : {&p.jump, &p.traction, &p.r})
+      for (std::size_t i = 0; i < n; ++i)
+        (*x)(static_cast<Eigen::Index>(i)) = v[at++];
+  }
+}
+
+} // namespace bipot::contact
