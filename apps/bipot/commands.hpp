@@ -2,7 +2,7 @@
 /// The subcommands of the `bipot` executable. Each returns the process exit code:
 /// 0 success, 1 usage error, 2 invalid input, 3 solver failure, 4 other error.
 
-#include "fem/analysis/catalogue.hpp"
+#include "apps/catalogue/catalogue.hpp"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,5 @@
 #include "apps/catalogue/builtin_catalogue.hpp"
 
-#include "apps/catalogue/contact_module.hpp"
 #include "contact/laws/interface_law_registry.hpp"
 #include "materials/material_registry.hpp"
 
@@ -10,7 +9,6 @@ Catalogue builtin_catalogue() {
   Catalogue catalogue;
   catalogue.materials = builtin_materials();
   catalogue.interface_laws = contact::builtin_interface_laws();
-  catalogue.interface_module = contact_module();
   return catalogue;
 }
 

@@ -2,7 +2,7 @@
 /// The catalogue of everything bipot ships: the wiring of materials/ and contact/ into the
 /// registries the reader and the model builder are given.
 
-#include "fem/analysis/catalogue.hpp"
+#include "apps/catalogue/catalogue.hpp"
 
 namespace bipot {
 

@@ -1,7 +1,6 @@
 #include "apps/common/checked_model.hpp"
 #include "apps/common/run_folder.hpp"
 
-#include "contact/solver/interface_newton_system.hpp"
 #include "fem/core/error.hpp"
 #include "fem/input/condition_checks.hpp"
 #include "fem/input/increment_checks.hpp"
@@ -45,20 +44,20 @@ Model checked_model(const ProblemSpec& spec, const Catalogue& catalogue) {
   // the other.
   std::vector<std::pair<Index, Index>> joined;
   std::vector<OpeningInterface> opening;
-  std::vector<Index> held; // by perfectly bonded obstacles
+  const std::vector<Index> held = // by perfectly bonded obstacles
+      model.interface_module ? model.interface_module->held_nodes(model) : std::vector<Index>{};
   for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
-    const contact::Interface& iface = model.interfaces[k];
+    const InterfaceMesh& iface = model.interfaces[k];
     OpeningInterface o;
     o.name = iface.name;
     o.smallest_gap = iface.pairs.empty() ? 0.0 : iface.pairs.front().gap;
     for (const auto& pair : iface.pairs) {
-      if (iface.obstacle && model.interface_laws[k]->is_tied()) held.push_back(pair.node_a);
-      if (pair.node_b != contact::rigid_obstacle) joined.emplace_back(pair.node_a, pair.node_b);
+      if (pair.node_b != rigid_obstacle) joined.emplace_back(pair.node_a, pair.node_b);
       o.pairs.emplace_back(pair.node_a, pair.node_b);
       o.smallest_gap = std::min(o.smallest_gap, pair.gap);
     }
     o.smallest_gap += iface.initial_gap;
-    if (!contact::shares_nodes(iface)) opening.push_back(std::move(o));
+    if (!shares_nodes(iface)) opening.push_back(std::move(o));
   }
   const MeshSpec& m = model.spec.mesh;
   const std::string where = m.where + (m.has_blocks || m.file.empty() ? "" : ": " + m.file);
@@ -77,16 +76,11 @@ Model checked_model(const ProblemSpec& spec, const Catalogue& catalogue) {
     const auto free = free_rigid_body_modes(model.spec, model.mesh, opening, held, reference_nodes);
     problems.insert(problems.end(), free.begin(), free.end());
   }
-  // generalized_newton's dense condensed system: refused here when too large, rather than
-  // once `run` has built the analysis.
-  if (model.contact_solver.exact_newton()) {
-    std::vector<const contact::Interface*> condensed;
-    for (const auto& iface : model.interfaces)
-      if (!contact::shares_nodes(iface)) condensed.push_back(&iface);
-    const std::string too_large = contact::condensed_size_problem(
-        contact::condensed_size(condensed, spatial_dim(model.kinematics)),
-        model.spec.contact_solver.where);
-    if (!too_large.empty()) problems.push_back(too_large);
+  // What only the whole model shows to the interface module (generalized_newton's dense
+  // condensed system too large): refused here rather than once `run` has built the analysis.
+  if (model.interface_module) {
+    const auto found = model.interface_module->check(model);
+    problems.insert(problems.end(), found.begin(), found.end());
   }
   if (!problems.empty()) throw InputError(problems);
   return model;

@@ -2,6 +2,7 @@
 /// The model every app solves: built, then checked for what a solve would not survive or
 /// would get silently wrong — by `check` and before `run` solves anything.
 
+#include "apps/catalogue/catalogue.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/input/problem_spec.hpp"
 

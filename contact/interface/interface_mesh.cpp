@@ -408,11 +408,6 @@ void glue_facet_set_pairs(Mesh& mesh, const std::vector<InterfaceDefinition>& de
 
 } // namespace
 
-bool shares_nodes(const Interface& iface) {
-  return std::all_of(iface.pairs.begin(), iface.pairs.end(),
-                     [](const InterfacePair& p) { return p.node_a == p.node_b; });
-}
-
 std::vector<Interface> split_interfaces(Mesh& mesh, Kinematics kin,
                                         const std::vector<InterfaceDefinition>& defs,
                                         bool tie_only) {

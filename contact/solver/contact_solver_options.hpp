@@ -16,6 +16,7 @@
 ///   exact generalized Jacobian of the fixed point (interface_newton_system.hpp); no outer
 ///   multiplier loop.
 
+#include "fem/core/nonlinear_solver_options.hpp"
 #include "fem/core/parameter_schema.hpp"
 #include "fem/core/registry.hpp"
 
@@ -23,19 +24,10 @@
 
 namespace bipot::contact {
 
-struct ContactSolverOptions {
-  std::string type = "generalized_newton";
+/// The driver's part (type, tolerance, limits) and the augmentation of the projection.
+struct ContactSolverOptions : NonlinearSolverOptions {
   double augmentation = 0;         ///< ρ (kN/m³); 0 = automatic per pair
   double augmentation_factor = 30; ///< multiplies the automatic ρ
-  double tolerance = 1e-8;         ///< on the force residual and on the multiplier change
-  int max_iterations = 50;         ///< Newton iterations (inner ones for Uzawa)
-  int max_outer_iterations = 1;    ///< Uzawa multiplier updates per increment
-  int max_cutbacks = 6;            ///< halvings of a failing increment before the run stops
-  bool line_search = true;         ///< backtracking on the residual norm
-
-  bool uzawa() const { return type == "bipotential_uzawa"; }
-  /// Exact generalized Newton on the condensed interface system (InterfaceNewtonSystem).
-  bool exact_newton() const { return type == "generalized_newton"; }
 };
 
 /// The solvers by YAML name, each with its parameter schema (for validation and docs).

@@ -28,14 +28,6 @@ std::vector<double> TiedInterface::committed_adhesion() const {
   return std::vector<double>(iface_.pairs.size(), 1.0);
 }
 
-std::vector<Index> TiedInterface::held_nodes() const {
-  std::vector<Index> nodes;
-  if (iface_.obstacle)
-    for (const InterfacePair& p : iface_.pairs)
-      nodes.push_back(p.node_a);
-  return nodes;
-}
-
 void TiedInterface::set_transmitted_forces(const std::vector<double>& force_all) {
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     const InterfacePair& p = iface_.pairs[i];

@@ -1,9 +1,10 @@
 #pragma once
-/// Exact tying: the bodies share the interface's nodes (perfect bonding in every stage, or a
-/// body bonded to a rigid obstacle, whose nodes are then held by prescribed displacements).
-/// Nothing is added to the system, which is what makes the tie exact; the forces the
-/// interface transmits are found after each increment from the bodies (set_transmitted_forces())
-/// for output. The other enforcement of the interface laws is InterfaceAssembler.
+/// Exact tying: the bodies share the interface's nodes (perfect bonding in every stage between
+/// two bodies). Nothing is added to the system, which is what makes the tie exact; the forces
+/// the interface transmits are found after each increment from the bodies
+/// (set_transmitted_forces()) for output. The other enforcement of the interface laws is
+/// InterfaceAssembler (which also ties split pairs and bodies bonded to a rigid obstacle, by
+/// the tie law: evaluate_tie()).
 
 #include "contact/interface/interface_mesh.hpp"
 #include "fem/assembly/dof_map.hpp"
@@ -52,12 +53,11 @@ public:
   bool enter_stage(std::size_t) override { return false; }
   void set_gap_shift(double shift) override { gap_shift_ = shift; }
   double gap_shift() const override { return gap_shift_; }
-  bool has_obstacle() const override { return iface_.obstacle; }
+  /// Pairs against an obstacle are never shared (node_b is the obstacle).
+  bool has_obstacle() const override { return false; }
   void set_obstacle_displacement(const std::array<double, 3>& u) override { obstacle_u_ = u; }
   std::array<double, 3> obstacle_displacement() const override { return obstacle_u_; }
-  /// A tied obstacle holds its pairs' nodes (the stage driver moves them with it).
-  std::vector<Index> held_nodes() const override;
-  /// The nodes' displacements are zeroed with the bodies' (the obstacle's too).
+  /// Nothing to keep: the shared nodes' displacements are zeroed with the bodies'.
   void absorb_displacements() override { obstacle_u_ = {0, 0, 0}; }
   TransmittedForce transmitted_force() const override { return source_; }
   /// `force_all` holds, for every DOF, the force body 1 exerts on body 2 at the shared nodes.

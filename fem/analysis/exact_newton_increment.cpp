@@ -29,7 +29,7 @@ double law_residual(const CondensedInterfaceSystem& sys, const std::vector<bool>
 
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
                                                  PathStep* path) {
-  const contact::ContactSolverOptions& copt = model.contact_solver;
+  const NonlinearSolverOptions& copt = model.contact_solver;
   const CondensedInterfaceSystem& sys = *newton_system;
   const Index nI = sys.num_dofs(), n = sys.size();
   F_step.copy(F_prev);

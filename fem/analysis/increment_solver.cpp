@@ -25,7 +25,7 @@ double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, dou
 // load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
 bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log) {
   if (newton_system) return solve_increment_exact(lambda, dtau, log);
-  const contact::ContactSolverOptions& copt = model.contact_solver;
+  const NonlinearSolverOptions& copt = model.contact_solver;
   const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
   const double tolerance = has_contact ? copt.tolerance : options.residual_tolerance;
   F_step.copy(F_prev);

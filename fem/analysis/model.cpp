@@ -33,70 +33,6 @@ std::string unknown_set(const std::string& kind, const std::string& name,
   return unknown_in_mesh(kind, name, known);
 }
 
-contact::RigidObstacle rigid_obstacle(const ObstacleSpec& spec) {
-  using Shape = contact::RigidObstacle::Shape;
-  contact::RigidObstacle o;
-  o.shape = spec.type == "circle"     ? Shape::Circle
-            : spec.type == "sphere"   ? Shape::Sphere
-            : spec.type == "cylinder" ? Shape::Cylinder
-                                      : Shape::Plane;
-  const std::vector<double>& direction = o.shape == Shape::Cylinder ? spec.axis : spec.normal;
-  for (std::size_t i = 0; i < 3; ++i) {
-    o.point[i] = i < spec.point.size() ? spec.point[i] : 0.0;
-    o.direction[i] = i < direction.size() ? direction[i] : 0.0;
-  }
-  o.radius = spec.radius;
-  return o;
-}
-
-// Splits the mesh along every interface: those tied in every stage (perfect bonding) keep
-// their shared nodes, the others get the body-2 side's nodes duplicated and paired.
-void split_interfaces(Model& model, const Catalogue& catalogue) {
-  const auto& laws = catalogue.interface_laws;
-  std::vector<contact::InterfaceDefinition> tied, split;
-  std::vector<bool> is_tied;
-  const auto& stages = model.spec.stages;
-  for (std::size_t s = 0; s < stages.size(); ++s)
-    for (const auto& change : stages[s].interface_laws) {
-      const auto k = static_cast<std::size_t>(
-          std::find_if(model.spec.interfaces.begin(), model.spec.interfaces.end(),
-                       [&](const InterfaceSpec& f) { return f.name == change.interface; }) -
-          model.spec.interfaces.begin());
-      model.stage_laws.push_back({s, k, laws.create(change.law, change.parameters)});
-    }
-  for (std::size_t k = 0; k < model.spec.interfaces.size(); ++k) {
-    const InterfaceSpec& spec = model.spec.interfaces[k];
-    model.interface_laws.push_back(laws.create(spec.law, spec.parameters));
-    contact::InterfaceDefinition def;
-    def.name = spec.name;
-    if (spec.between.size() == 2) {
-      def.region_a = spec.between[0];
-      def.region_b = spec.between[1];
-    } else if (spec.facet_sets.size() == 2) {
-      def.facet_set_a = spec.facet_sets[0];
-      def.facet_set_b = spec.facet_sets[1];
-    } else if (spec.facet_sets.size() == 1) { // against an obstacle
-      def.facet_set_a = spec.facet_sets[0];
-    }
-    def.initial_gap = spec.initial_gap;
-    if (spec.pairing == "normal") def.pairing = contact::Pairing::Normal;
-    if (spec.obstacle) def.obstacle = rigid_obstacle(*spec.obstacle);
-    def.where = spec.where;
-    bool tied_always = model.interface_laws.back()->is_tied();
-    for (const auto& sl : model.stage_laws)
-      if (sl.interface == k) tied_always = tied_always && sl.law->is_tied();
-    is_tied.push_back(tied_always);
-    (is_tied.back() ? tied : split).push_back(def);
-  }
-  auto tied_ifaces = contact::split_interfaces(model.mesh, model.kinematics, tied, true);
-  auto split_ifaces = contact::split_interfaces(model.mesh, model.kinematics, split, false);
-  std::size_t it = 0, is = 0;
-  for (bool t : is_tied)
-    model.interfaces.push_back(std::move(t ? tied_ifaces[it++] : split_ifaces[is++]));
-  model.contact_solver = *catalogue.contact_solvers.create(model.spec.contact_solver.type,
-                                                           model.spec.contact_solver.parameters);
-}
-
 // Node sets selected by boxes; the tolerance is relative to the mesh size so that nodes on a
 // box face are in. An empty set is an error (a typo in a coordinate, most likely).
 void add_box_sets(const MeshSpec& spec, Mesh& mesh, std::vector<std::string>& problems) {
@@ -164,7 +100,8 @@ Mesh build_mesh(const MeshSpec& spec, int dim) {
   return make_block_mesh(b);
 }
 
-Model build_model(const ProblemSpec& spec, const Catalogue& catalogue) {
+Model build_model(const ProblemSpec& spec, const Registry<Material>& materials,
+                  std::shared_ptr<const InterfaceModule> interfaces) {
   Model model;
   model.spec = spec;
   model.kinematics = parse_kinematics(spec.kinematics);
@@ -207,7 +144,7 @@ Model build_model(const ProblemSpec& spec, const Catalogue& catalogue) {
       problems.push_back(m.where + ": " + unknown_set("region", m.region, region_names));
       continue;
     }
-    model.materials.push_back(catalogue.materials.create(m.type, m.parameters));
+    model.materials.push_back(materials.create(m.type, m.parameters));
     model.material_of_region[it->second] = model.materials.back().get();
   }
   std::vector<bool> region_used(max_id + 1, false);
@@ -271,11 +208,13 @@ Model build_model(const ProblemSpec& spec, const Catalogue& catalogue) {
     if (!mesh.regions.count(s.region))
       problems.push_back(s.where + ": " + unknown_set("region", s.region, region_names));
   if (!problems.empty()) throw InputError(problems);
-  split_interfaces(model, catalogue);
-  if (!model.interfaces.empty() && !catalogue.interface_module)
+  if (interfaces) {
+    interfaces->build(model); // splits the mesh along the interfaces
+  } else if (!spec.interfaces.empty()) {
     throw InputError({spec.interfaces.front().where +
-                      ": this catalogue has no interface module to enforce interfaces"});
-  model.interface_module = catalogue.interface_module;
+                      ": no interface module was given to build and enforce interfaces"});
+  }
+  model.interface_module = std::move(interfaces);
   restrict_sets_to_regions(spec.mesh, model.mesh);
   check_initial_stress_admissible(model);
   add_rigid_bodies(model); // last: its reference nodes end the mesh

@@ -66,8 +66,8 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
       // Tied interfaces get their tractions from body 1's forces (StaticAnalysis), which
       // needs body 1 as a region: not for tied facet-set interfaces (but tied obstacles:
       // the reactions of the nodes they hold).
-      if (contact::shares_nodes(model.interfaces[k]) &&
-          model.spec.interfaces[k].between.size() != 2 && !model.interfaces[k].obstacle)
+      if (shares_nodes(model.interfaces[k]) && model.spec.interfaces[k].between.size() != 2 &&
+          !model.interfaces[k].obstacle)
         continue;
       const auto& iface = model.interfaces[k];
       written_.push_back(k);

@@ -88,11 +88,13 @@ void add_rigid_bodies(Model& model) {
     }
     model.rigid_bodies.push_back(std::move(body));
   }
-  // A bonded obstacle prescribes its nodes: they cannot also follow a reference node.
+  // A bonded obstacle holds its nodes: they cannot also follow a reference node.
+  const std::vector<Index> held =
+      model.interface_module ? model.interface_module->held_nodes(model) : std::vector<Index>{};
   for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
-    if (!model.interfaces[k].obstacle || !model.interface_laws[k]->is_tied()) continue;
+    if (!model.interfaces[k].obstacle) continue;
     for (const auto& p : model.interfaces[k].pairs)
-      if (body_of[p.node_a] >= 0) {
+      if (body_of[p.node_a] >= 0 && std::count(held.begin(), held.end(), p.node_a)) {
         problems.push_back(spec.interfaces[k].where + ": interface '" + model.interfaces[k].name +
                            "': " + mesh.describe_node(p.node_a) +
                            " is held by this bonded obstacle and belongs to rigid body '" +
@@ -104,7 +106,7 @@ void add_rigid_bodies(Model& model) {
   // generalized_newton condenses on the interface DOFs, which must be unknowns.
   if (model.contact_solver.exact_newton())
     for (std::size_t k = 0; k < model.interfaces.size(); ++k) {
-      if (model.interface_laws[k]->is_tied()) continue;
+      if (shares_nodes(model.interfaces[k])) continue; // tied: not condensed
       for (const auto& p : model.interfaces[k].pairs) {
         const Index n = body_of[p.node_a] >= 0 ? p.node_a : p.node_b;
         if (n < 0 || body_of[n] < 0) continue;

@@ -260,7 +260,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       for (const auto& ia : interfaces)
         ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
-      tied_obstacle_forces();
       record_rigid_body_forces();
       summary.assembly_seconds += seconds_since(t0);
 

@@ -60,9 +60,8 @@ struct InterfaceEnergy {
 
 /// How the forces of an interface that adds nothing to the system are found, for output.
 enum class TransmittedForce {
-  None,         ///< it computes its own forces
-  FromBody1,    ///< minus the unbalanced force of body 1's cells at the shared nodes
-  FromHeldNodes ///< minus the reactions of the nodes it holds (held_nodes())
+  None,     ///< it computes its own forces (or, tied without a body-1 region, none)
+  FromBody1 ///< minus the unbalanced force of body 1's cells at the shared nodes
 };
 
 class InterfaceEnforcement {
@@ -131,8 +130,6 @@ public:
   virtual bool has_obstacle() const = 0;
   virtual void set_obstacle_displacement(const std::array<double, 3>& u) = 0;
   virtual std::array<double, 3> obstacle_displacement() const = 0;
-  /// Nodes held by prescribed displacements (a tied obstacle moves them with itself).
-  virtual std::vector<Index> held_nodes() const { return {}; }
   /// Displacement reset keeping forces (geostatic stage): the jumps become an offset.
   virtual void absorb_displacements() = 0;
   /// Where its forces come from when it adds nothing to the system.

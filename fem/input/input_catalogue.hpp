@@ -7,7 +7,7 @@ namespace bipot {
 
 /// Names and parameter schemas only: the reader checks `type:`/`law:` names and their
 /// parameters without knowing the classes behind them, so fem/input depends on neither
-/// materials/ nor contact/. An application builds a Catalogue (fem/analysis/catalogue.hpp,
+/// materials/ nor contact/. An application builds a Catalogue (apps/catalogue/catalogue.hpp,
 /// usually apps/catalogue's builtin_catalogue() plus its own entries), which converts to this.
 struct InputCatalogue {
   const SchemaIndex& materials;

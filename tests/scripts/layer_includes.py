@@ -28,18 +28,12 @@ DEPENDS = {
     # TODAY'S EXCEPTION: fem/linalg in fem/input, for the linear solver's parameter schema
     # (LinearSolver::schema) the reader validates `linear_solver:` against.
     "fem/input": ["fem/core", "fem/mesh", "fem/element", "fem/linalg"],
-    # TODAY'S EXCEPTION (issue 10 item 5): the Model holds the split interfaces, their laws
-    # and the contact solver's options as contact types, and the Catalogue the law registry
-    # (model.hpp, catalogue.hpp), so fem/analysis includes contact/interface, contact/laws
-    # and contact/solver. The driver itself sees only InterfaceEnforcement and
-    # CondensedInterfaceSystem (fem/assembly). Tighten this line when the Model's interfaces
-    # become the interface module's.
-    "fem/analysis": ["fem/core", "fem/mesh", "fem/element", "contact/laws",
-                     "fem/assembly", "contact/interface", "contact/solver", "fem/linalg",
+    "fem/analysis": ["fem/core", "fem/mesh", "fem/element", "fem/assembly", "fem/linalg",
                      "fem/io", "fem/gmsh", "fem/input"],
     # The built-in catalogue: where bipot's own materials and laws are wired in.
-    "apps/catalogue": ["fem/analysis", "materials", "contact/laws", "contact/solver"],
-    "apps/common": ["fem/analysis"],
+    "apps/catalogue": ["fem/analysis", "materials", "contact/laws", "contact/interface",
+                       "contact/solver"],
+    "apps/common": ["fem/analysis", "apps/catalogue"],
     "apps/bipot": ["fem/analysis", "apps/common", "apps/catalogue"],
     "apps/pile_pullout": ["fem/analysis", "fem/input", "apps/common", "apps/catalogue"],
 }

@@ -6,6 +6,7 @@
 // - both contact solvers reach the same solution; RCCM with beta0 = 0 is Coulomb-Signorini;
 // - perfect bonding equals the same mesh without any interface.
 #include "apps/catalogue/builtin_catalogue.hpp"
+#include "apps/catalogue/contact_module.hpp"
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/result_writer.hpp"
 #include "fem/analysis/static_analysis.hpp"
@@ -85,10 +86,10 @@ StageForces run(const std::string& text) {
     for (const auto& r : ia.results()) {
       stick += r.status == contact::ContactStatus::Stick;
       if (r.status == contact::ContactStatus::Slip)
-        cone = std::max(cone,
-                        std::abs(r.r.tail(r.r.size() - 1).norm() -
-                                 model.interface_laws[0]->friction_coefficient(r.beta) * r.r(0)) /
-                            r.r(0));
+        cone =
+            std::max(cone, std::abs(r.r.tail(r.r.size() - 1).norm() -
+                                    interface_law(model, 0).friction_coefficient(r.beta) * r.r(0)) /
+                               r.r(0));
     }
     out.sticking.push_back(stick);
     out.cone_error.push_back(cone);

@@ -157,8 +157,7 @@ struct StaticAnalysis::Impl {
   std::vector<double> gap_start, gap_target;
   // Obstacle translations (per interface) at the start and the end of the current stage.
   std::vector<std::array<double, 3>> obstacle_start, obstacle_target;
-  /// Reads the stage's obstacle displacements; holds the nodes of tied obstacle interfaces to
-  /// their obstacle (entries of `target`). Before `start` is filled (obstacle_motion.cpp).
+  /// Reads the stage's obstacle displacements (obstacle_motion.cpp).
   void begin_obstacle_stage(const StageSpec& stage);
   // Rigid bodies (rigid_body_motion.cpp): prescribed components of the reference nodes
   // (entries of `target`, before `start` is filled), forces and moments on them plus the
@@ -169,9 +168,6 @@ struct StaticAnalysis::Impl {
   std::vector<double> rigid_force_all; ///< f_int at the master DOFs (others 0), all DOFs
   /// Sets every obstacle's translation at load factor `lambda` of the stage.
   void move_obstacles(double lambda);
-  /// Tied obstacle interfaces, for output: the force on the obstacle is minus the reactions
-  /// of the nodes it holds.
-  void tied_obstacle_forces();
 
   Impl(const Model& m, AnalysisOptions o, ResultWriter* w)
       : model(m), options(o), writer(w), dim(spatial_dim(m.kinematics)),

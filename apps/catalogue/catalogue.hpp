@@ -6,26 +6,26 @@
 
 #include "contact/laws/interface_law.hpp"
 #include "contact/solver/contact_solver_options.hpp"
-#include "fem/analysis/interface_module.hpp"
+#include "fem/analysis/model.hpp"
 #include "fem/core/material.hpp"
 #include "fem/core/registry.hpp"
 #include "fem/input/input_catalogue.hpp"
-
-#include <memory>
 
 namespace bipot {
 
 struct Catalogue {
   Registry<Material> materials{"material"};
   Registry<contact::InterfaceLaw> interface_laws{"interface law"};
-  /// The contact algorithms are the toolkit's own (fem/analysis drives them by type), so
+  /// The contact algorithms are the toolkit's own (the contact module enforces them), so
   /// this one is fixed: its entries only turn validated options into ContactSolverOptions.
   const Registry<contact::ContactSolverOptions>& contact_solvers = contact::contact_solvers();
-  /// Enforces the interfaces of the models built from this catalogue (the built-in one:
-  /// apps/catalogue/contact_module.cpp).
-  std::shared_ptr<const InterfaceModule> interface_module;
 
   operator InputCatalogue() const { return {materials, interface_laws, contact_solvers}; }
 };
+
+/// The model of `spec` with the catalogue's materials, its interfaces built and enforced by
+/// the contact module over the catalogue's laws (contact_module.hpp). `catalogue` must know
+/// every name `spec` uses (the one `spec` was read with).
+Model build_model(const ProblemSpec& spec, const Catalogue& catalogue);
 
 } // namespace bipot
