@@ -93,7 +93,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     for (const auto& ia : interfaces)
       ia->add_to_system(constraints, nullptr, du);
     du.finish_assembly();
-    const double full_norm = du.norm2();
+    const double full_norm = free_norm(du, constraints);
     double force_scale = 0, roundoff = 0;
     for (const auto& ia : interfaces) {
       force_scale = std::max(force_scale, ia->force_scale());

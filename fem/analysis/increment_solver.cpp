@@ -65,7 +65,7 @@ bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, Increment
     R.finish_assembly();
     if (need_matrix) K->finish_assembly();
     add_step_loads(constraints);
-    const double norm = R.norm2();
+    const double norm = free_norm(R, constraints);
     double change = 0, force_scale = 0, roundoff = 0;
     for (const auto& ia : interfaces) {
       change = std::max(change, ia->multiplier_change());
