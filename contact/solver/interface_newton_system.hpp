@@ -23,6 +23,7 @@
 #include "contact/solver/interface_assembler.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include <string>
 #include <vector>
@@ -66,6 +67,11 @@ public:
   /// (x, λ). Rows of I-DOFs flagged in `constrained` (same order as dofs()) get no interface
   /// term: their equation prescribes the DOF (the reaction takes the interface force).
   void add(const std::vector<bool>& constrained, Eigen::VectorXd& F, Eigen::MatrixXd* J) const;
+  /// The same with J's interface terms as (row, column, value) entries appended to `J` (a
+  /// few per pair; duplicates are to be summed): the sparse part of the Newton matrix, whose
+  /// dense part is the condensed bulk alone.
+  void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+           std::vector<Eigen::Triplet<double>>& J) const;
 
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const;
@@ -77,6 +83,10 @@ public:
   double released_adhesion_energy(Eigen::VectorXd* grad) const;
 
 private:
+  /// add() with each Jacobian entry passed to jac(row, column, value) (null: F only).
+  template <class AddEntry>
+  void add_terms(const std::vector<bool>& constrained, Eigen::VectorXd& F, AddEntry* jac) const;
+
   struct PairSlots {
     InterfaceAssembler* iface;
     std::size_t pair;

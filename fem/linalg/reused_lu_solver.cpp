@@ -4,9 +4,59 @@
 
 #include <algorithm>
 
+namespace bipot::detail {
+class CondensedOperator;
+}
+
+// Eigen's matrix-free protocol (its "matrix-free solvers" example): GMRES sees a
+// CondensedNewtonMatrix as a sparse-shaped operator whose product with a vector is −S x + P x.
+namespace Eigen::internal {
+template <>
+struct traits<bipot::detail::CondensedOperator> : public traits<Eigen::SparseMatrix<double>> {};
+} // namespace Eigen::internal
+
+namespace bipot::detail {
+class CondensedOperator : public Eigen::EigenBase<CondensedOperator> {
+public:
+  using Scalar = double;
+  using RealScalar = double;
+  using StorageIndex = int;
+  enum {
+    ColsAtCompileTime = Eigen::Dynamic,
+    MaxColsAtCompileTime = Eigen::Dynamic,
+    IsRowMajor = false
+  };
+  explicit CondensedOperator(const CondensedNewtonMatrix& J) : J(&J) {}
+  Eigen::Index rows() const { return J->rows(); }
+  Eigen::Index cols() const { return J->cols(); }
+  template <class Rhs>
+  Eigen::Product<CondensedOperator, Rhs, Eigen::AliasFreeProduct>
+  operator*(const Eigen::MatrixBase<Rhs>& x) const {
+    return Eigen::Product<CondensedOperator, Rhs, Eigen::AliasFreeProduct>(*this, x.derived());
+  }
+  const CondensedNewtonMatrix* J;
+};
+} // namespace bipot::detail
+
+namespace Eigen::internal {
+template <class Rhs>
+struct generic_product_impl<bipot::detail::CondensedOperator, Rhs, SparseShape, DenseShape,
+                            GemvProduct>
+    : generic_product_impl_base<bipot::detail::CondensedOperator, Rhs,
+                                generic_product_impl<bipot::detail::CondensedOperator, Rhs>> {
+  template <class Dst>
+  static void scaleAndAddTo(Dst& dst, const bipot::detail::CondensedOperator& lhs, const Rhs& rhs,
+                            const double& alpha) {
+    lhs.J->add_product(dst, rhs, alpha);
+  }
+};
+} // namespace Eigen::internal
+
 namespace bipot {
 
 namespace {
+
+using Factors = Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>;
 
 // Eigen's preconditioner concept around factors computed elsewhere: GMRES calls compute() on
 // the new matrix, which must not refactorise it (that is the point).
@@ -15,7 +65,7 @@ struct EarlierFactors {
   using RealScalar = double;
   using StorageIndex = Eigen::Index;
   enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
-  const Eigen::PartialPivLU<Eigen::MatrixXd>* lu = nullptr;
+  const Factors* lu = nullptr;
 
   EarlierFactors() = default;
   template <class M> explicit EarlierFactors(const M&) {}
@@ -28,27 +78,56 @@ struct EarlierFactors {
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 };
 
+// What GMRES iterates on: the dense matrix itself, or the operator around the condensed one.
+const Eigen::MatrixXd& gmres_matrix(const Eigen::MatrixXd& J) {
+  return J;
+}
+detail::CondensedOperator gmres_matrix(const CondensedNewtonMatrix& J) {
+  return detail::CondensedOperator(J);
+}
+void make_dense(const Eigen::MatrixXd& J, Eigen::MatrixXd& out) {
+  out = J;
+}
+void make_dense(const CondensedNewtonMatrix& J, Eigen::MatrixXd& out) {
+  J.to_dense(out);
+}
+
 } // namespace
 
-Eigen::VectorXd ReusedLuSolver::factorize_and_solve(const Eigen::MatrixXd& J,
-                                                    const Eigen::VectorXd& b) {
-  lu_.compute(J);
+template <class Matrix>
+Eigen::VectorXd ReusedLuSolver::factorize_and_solve(const Matrix& J, const Eigen::VectorXd& b) {
+  lu_.reset(); // it refers to factors_, which may be reallocated
+  make_dense(J, factors_);
+  lu_ = std::make_unique<Factors>(factors_);
   factorized_ = true;
   ++factorizations_;
   last_iterations_ = 0;
-  return lu_.solve(b);
+  return lu_->solve(b);
 }
 
 Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b,
                                       double accept) {
+  return solve_any(J, b, accept);
+}
+
+Eigen::VectorXd ReusedLuSolver::solve(const CondensedNewtonMatrix& J, const Eigen::VectorXd& b,
+                                      double accept) {
+  return solve_any(J, b, accept);
+}
+
+template <class Matrix>
+Eigen::VectorXd ReusedLuSolver::solve_any(const Matrix& J, const Eigen::VectorXd& b,
+                                          double accept) {
   accept = std::max(accept, accept_);
   const double b_norm = b.norm();
   if (b_norm == 0.0) return Eigen::VectorXd::Zero(b.size());
-  if (!factorized_ || lu_.rows() != J.rows()) return factorize_and_solve(J, b);
-  Eigen::GMRES<Eigen::MatrixXd, EarlierFactors> gmres;
+  if (!factorized_ || factors_.rows() != J.rows()) return factorize_and_solve(J, b);
+  const auto op = gmres_matrix(J);
+  using Op = std::decay_t<decltype(op)>;
+  Eigen::GMRES<Op, EarlierFactors> gmres;
   gmres.set_restart(max_iterations_);
-  gmres.compute(J);
-  gmres.preconditioner().lu = &lu_;
+  gmres.compute(op);
+  gmres.preconditioner().lu = lu_.get();
   // Eigen's GMRES stops on the preconditioned residual; the true one (one product to check)
   // is larger by up to the conditioning of the earlier factors: 1e-12 became 1e-10 to 1e-8 on
   // the pile's matrices. A GMRES solve of the true residual (iterative refinement) recovers

@@ -3,7 +3,11 @@
 /// Newton matrices of generalized_newton, where only the pairs that changed status (stick,
 /// slip, open) or whose β moved change their rows between iterations and increments.
 
+#include "fem/linalg/condensed_newton_matrix.hpp"
+
 #include <Eigen/Dense>
+
+#include <memory>
 
 namespace bipot {
 
@@ -36,6 +40,10 @@ public:
   /// least the constructor's: the forcing term of an inexact Newton step) once GMRES has
   /// needed more than cheap_iterations; a cheaper solve still meets the tight acceptance.
   Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, double accept);
+  /// The same for J in operator form: GMRES applies −S x + P x (S streamed once per product
+  /// instead of the whole dense J), and J is formed densely only when it is factorised. The
+  /// same iterates as the dense solve of the same J, up to round-off.
+  Eigen::VectorXd solve(const CondensedNewtonMatrix& J, const Eigen::VectorXd& b, double accept);
   /// GMRES iterations within which a solve meets the tight acceptance whatever `accept`.
   static constexpr int cheap_iterations = 10;
   /// Drop the factors (the matrices to come are unrelated to the last one).
@@ -46,11 +54,16 @@ public:
   int last_iterations() const { return last_iterations_; }
 
 private:
-  Eigen::VectorXd factorize_and_solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b);
+  template <class Matrix>
+  Eigen::VectorXd solve_any(const Matrix& J, const Eigen::VectorXd& b, double accept);
+  template <class Matrix>
+  Eigen::VectorXd factorize_and_solve(const Matrix& J, const Eigen::VectorXd& b);
 
   double tolerance_, accept_;
   int max_iterations_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  // The factors overwrite the matrix they come from (in-place LU): one n × n array, not two.
+  Eigen::MatrixXd factors_;
+  std::unique_ptr<Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>> lu_;
   bool factorized_ = false;
   int factorizations_ = 0, iterations_ = 0, last_iterations_ = 0;
 };
