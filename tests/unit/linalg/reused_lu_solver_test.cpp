@@ -175,5 +175,39 @@ TEST(ReusedLuSolver, OperatorFormStopsAtTheForcingTerm) {
   }
 }
 
+TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
+  const int m = 120, n = 180;
+  const Eigen::MatrixXd S = -test_matrix(m, 5);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -2.0, 1.0);
+  const CondensedNewtonMatrix J0 = condensed(S, n, 6, 1.0), J1 = condensed(S, n, 7, 3.0);
+  ReusedLuSolver single, twice;
+  single.set_single_precision_factors(true);
+  for (const auto* J : {&J0, &J1}) {
+    Eigen::MatrixXd dense;
+    J->to_dense(dense);
+    const Eigen::VectorXd exact = dense.partialPivLu().solve(b);
+    const Eigen::VectorXd xs = single.solve(*J, b, 1e-11), xd = twice.solve(*J, b, 1e-11);
+    std::printf("single factors: %d GMRES iterations (double %d), residual %.1e\n",
+                single.last_iterations(), twice.last_iterations(), relative_residual(dense, xs, b));
+    EXPECT_LT(relative_residual(dense, xs, b), 1e-11);
+    EXPECT_LE((xs - exact).norm(), 1e-10 * exact.norm());
+    // A fresh factorisation in float is not a solution by itself: GMRES refines it.
+    if (J == &J0) EXPECT_GT(single.last_iterations(), 0);
+  }
+  EXPECT_EQ(single.factorizations(), 1);
+  // Beyond what float factors can precondition (condition number ~1e12): double takes over.
+  Eigen::MatrixXd hard = test_matrix(60, 11);
+  hard.row(3) = hard.row(4) + 1e-12 * hard.row(3);
+  const Eigen::VectorXd c = Eigen::VectorXd::Ones(60);
+  ReusedLuSolver fallback;
+  fallback.set_single_precision_factors(true);
+  const Eigen::VectorXd x = fallback.solve(hard, c, 1e-11);
+  const Eigen::VectorXd exact = hard.partialPivLu().solve(c);
+  std::printf("ill-conditioned: %d factorisations, |x - exact| / |exact| = %.1e\n",
+              fallback.factorizations(), (x - exact).norm() / exact.norm());
+  EXPECT_EQ(fallback.factorizations(), 2);
+  EXPECT_LE((x - exact).norm(), 1e-3 * exact.norm());
+}
+
 } // namespace
 } // namespace bipot
