@@ -21,8 +21,10 @@ void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<I
   dofs_ = schur_dofs;
   std::sort(dofs_.begin(), dofs_.end());
   const std::vector<long long> vars(dofs_.begin(), dofs_.end());
+  schur_.resize(0, 0); // the old S is not needed while MUMPS factorises (its peak)
   impl_->direct.factorize_with_schur(A.impl_->matrix, vars);
-  const std::vector<double>& s = impl_->direct.schur();
+  // Moved out of the direct solver: S is kept once, here (it was three times).
+  const std::vector<double> s = impl_->direct.take_schur();
   const Index m = static_cast<Index>(dofs_.size());
   // MUMPS returns an unsymmetric Schur complement by rows (ICNTL(19) = 1).
   schur_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(

@@ -69,6 +69,11 @@ public:
 
   void factorize(const std::vector<double>& values) override {
     std::copy(values.begin(), values.end(), values_.begin());
+    // S is written here and handed over by take_schur() (no copy kept: 77 MB at |I| = 3100);
+    // the solves after the factorisation do not read it.
+    const std::size_t m = schur_vars_.size();
+    schur_.assign(m * m, 0.0);
+    id_.schur = schur_.data();
     // Off-diagonal pivoting can need more workspace than the analysis estimated
     // (INFOG(1) = -8, -9): retry with a larger relaxation, as the MUMPS manual advises.
     for (int attempt = 0;; ++attempt) {
@@ -100,11 +105,9 @@ public:
     for (std::size_t i = 0; i < variables.size(); ++i)
       schur_vars_[i] = static_cast<MUMPS_INT>(variables[i] + 1);
     const std::size_t m = variables.size();
-    schur_.assign(m * m, 0.0);
     reduced_.assign(m, 0.0);
     id_.size_schur = static_cast<MUMPS_INT>(m);
     id_.listvar_schur = schur_vars_.data();
-    id_.schur = schur_.data();
     id_.schur_lld = static_cast<MUMPS_INT>(m);
     // ICNTL(19) = 1: the whole Schur complement, centralised on this (host) process, by rows
     // for an unsymmetric matrix. 0 when empty: MUMPS refuses a Schur set of size 0.
@@ -114,7 +117,10 @@ public:
     id_.icntl[23] = m > 0 ? 1 : 0;
   }
 
-  const std::vector<double>& schur() const override { return schur_; }
+  std::vector<double> take_schur() override {
+    id_.schur = nullptr;
+    return std::move(schur_);
+  }
 
   void reduce(const double* b, double* work, double* reduced) override {
     std::copy(b, b + id_.n, work);

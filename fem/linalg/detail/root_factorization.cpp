@@ -15,7 +15,7 @@ namespace {
 void RootFactorization::set_schur_variables(const std::vector<long long>&) {
   no_schur();
 }
-const std::vector<double>& RootFactorization::schur() const {
+std::vector<double> RootFactorization::take_schur() {
   no_schur();
 }
 void RootFactorization::reduce(const double*, double*, double*) {

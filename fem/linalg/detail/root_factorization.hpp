@@ -32,9 +32,9 @@ public:
   // Only MUMPS offers it (ICNTL(19)); the defaults throw.
 
   /// Keeps `variables` (0-based, sorted) as Schur variables: call before analyse(). After
-  /// each factorize(), schur() holds S, row-major, size |I|².
+  /// each factorize(), take_schur() hands over S (row-major, size |I|²; no copy is kept).
   virtual void set_schur_variables(const std::vector<long long>& variables);
-  virtual const std::vector<double>& schur() const;
+  virtual std::vector<double> take_schur();
   /// Condensation of b (length n): `reduced` (length |I|) = b_I − A_IB A_BB⁻¹ b_B. `work`
   /// (length n) receives the package's partial solution and must be passed unchanged to
   /// expand().

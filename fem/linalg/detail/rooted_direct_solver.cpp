@@ -129,15 +129,15 @@ void RootedDirectSolver::factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
   const auto values = im.gather_values(*A);
   on_root(im.rank, im.package, "factorisation", [&] {
     im.lu->factorize(values);
-    im.schur = im.lu->schur();
+    im.schur = im.lu->take_schur();
   });
   const std::size_t m = schur_dofs.size();
   im.schur.resize(m * m);
   MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
-const std::vector<double>& RootedDirectSolver::schur() const {
-  return impl_->schur;
+std::vector<double> RootedDirectSolver::take_schur() {
+  return std::move(impl_->schur);
 }
 
 std::vector<double> RootedDirectSolver::reduce(const double* b_owned) {

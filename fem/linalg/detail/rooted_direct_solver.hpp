@@ -30,11 +30,12 @@ public:
   void solve(const double* b_owned, double* x_owned);
 
   /// Factorises A keeping the global rows `schur_dofs` (sorted) as Schur variables I (MUMPS
-  /// only, collective): afterwards schur() is S = A_II − A_IB A_BB⁻¹ A_BI on every rank
-  /// (row-major). A new set of Schur variables repeats the analysis.
+  /// only, collective): afterwards take_schur() hands over S = A_II − A_IB A_BB⁻¹ A_BI on
+  /// every rank (row-major; once per factorisation: no copy is kept). A new set of Schur variables
+  /// repeats the analysis.
   void factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
                             const std::vector<long long>& schur_dofs);
-  const std::vector<double>& schur() const;
+  std::vector<double> take_schur();
   /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b (collective). Keeps the
   /// partial solution for the next expand().
   std::vector<double> reduce(const double* b_owned);
