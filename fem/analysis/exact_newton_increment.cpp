@@ -148,7 +148,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     std::vector<double> trial = u;
     Eigen::VectorXd z(nz), F(nz), dz(nz), F_try(nz), grad;
     // J = [−S 0; 0 0] + the sparse interface (and border) terms: S is not copied per iteration.
-    CondensedNewtonMatrix J(S, nz);
+    CondensedNewtonMatrix J(S, nz, schur.symmetric());
     std::vector<Eigen::Triplet<double>> entries;
     const Eigen::VectorXd lambda0 = sys.multipliers();
     z.head(nI).setZero();

@@ -18,8 +18,10 @@ namespace bipot {
 /// factorised.
 class CondensedNewtonMatrix {
 public:
-  /// `S` must outlive this matrix; n ≥ S.rows().
-  CondensedNewtonMatrix(const Eigen::MatrixXd& S, Index n);
+  /// `S` must outlive this matrix; n ≥ S.rows(). `symmetric_S`: S is symmetric (to
+  /// round-off), and only its lower triangle is read (products and dense form): each product
+  /// streams half of S.
+  CondensedNewtonMatrix(const Eigen::MatrixXd& S, Index n, bool symmetric_S = false);
 
   Index rows() const { return n_; }
   Index cols() const { return n_; }
@@ -32,7 +34,10 @@ public:
   /// dst += alpha J x.
   template <class Dst, class X> void add_product(Dst& dst, const X& x, double alpha) const {
     const Index m = S_->rows();
-    dst.head(m).noalias() -= alpha * (*S_) * x.head(m);
+    if (symmetric_)
+      dst.head(m).noalias() -= alpha * (S_->template selfadjointView<Eigen::Lower>() * x.head(m));
+    else
+      dst.head(m).noalias() -= alpha * (*S_) * x.head(m);
     dst.noalias() += alpha * (P_ * x);
   }
   /// J x.
@@ -48,6 +53,7 @@ public:
 private:
   const Eigen::MatrixXd* S_;
   Index n_;
+  bool symmetric_;
   Eigen::SparseMatrix<double> P_;
 };
 

@@ -44,6 +44,13 @@ public:
   /// (collective; `x_schur` must be the same on every rank).
   void expand(const Eigen::VectorXd& x_schur, DistributedVector& x);
 
+  /// max |S_ij − S_ji| / max |S_ij|: round-off (~1e-15) when A is symmetric, as a linear
+  /// elastic bulk is; then S x can read one triangle only (half the bytes).
+  double asymmetry() const { return asymmetry_; }
+  /// S is symmetric to round-off.
+  bool symmetric() const { return asymmetry_ <= symmetric_within; }
+  static constexpr double symmetric_within = 1e-12;
+
   /// Seconds in the last factorize() (analysis included when it ran).
   double setup_seconds() const { return setup_seconds_; }
 
@@ -53,6 +60,7 @@ private:
   std::vector<Index> dofs_;
   Eigen::MatrixXd schur_;
   double setup_seconds_ = 0;
+  double asymmetry_ = 0;
 };
 
 } // namespace bipot

@@ -145,6 +145,32 @@ TEST(ReusedLuSolver, OperatorFormGivesTheDenseSolution) {
   EXPECT_GT(by_operator.last_iterations(), 0);
 }
 
+TEST(ReusedLuSolver, SymmetricBlockIsReadByItsLowerTriangle) {
+  const int m = 90, n = 130;
+  Eigen::MatrixXd S = test_matrix(m, 12);
+  S = -(S + S.transpose()).eval();
+  const CondensedNewtonMatrix full = condensed(S, n, 13, 1.0);
+  Eigen::MatrixXd dense_full, dense_lower;
+  full.to_dense(dense_full);
+  // The same P: copy it over.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < full.sparse_part().outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(full.sparse_part(), c); it; ++it)
+      entries.emplace_back(it.row(), it.col(), it.value());
+  CondensedNewtonMatrix by_lower(S, n, true);
+  by_lower.set_sparse_part(entries);
+  by_lower.to_dense(dense_lower);
+  EXPECT_EQ((dense_lower - dense_full).norm(), 0.0);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  EXPECT_LE((by_lower * x - dense_full * x).norm(), 1e-13 * (dense_full * x).norm());
+  // Only the lower triangle is read: an upper triangle of garbage changes nothing.
+  Eigen::MatrixXd S_upper_garbage = S;
+  S_upper_garbage.triangularView<Eigen::StrictlyUpper>().setConstant(1e30);
+  CondensedNewtonMatrix garbage(S_upper_garbage, n, true);
+  garbage.set_sparse_part(entries);
+  EXPECT_LE((garbage * x - dense_full * x).norm(), 1e-13 * (dense_full * x).norm());
+}
+
 TEST(ReusedLuSolver, OperatorFormStopsAtTheForcingTerm) {
   const int m = 100, n = 150;
   const Eigen::MatrixXd S = -test_matrix(m, 8);

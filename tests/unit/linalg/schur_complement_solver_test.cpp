@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,8 @@ TEST(SchurComplementSolver, IsTheCoarseChainAndExpandsToTheExactSolution) {
 
   DistributedVector b(dist), x(dist);
   chain.assemble_rhs(b);
+  // The one-way tie makes S unsymmetric by the tie stiffness: not taken for symmetric.
+  EXPECT_FALSE(solver.symmetric()) << solver.asymmetry();
   const Eigen::VectorXd c = solver.reduce(b);
   ASSERT_EQ(c.size(), 4);
   const Eigen::VectorXd x_kept = solver.schur().partialPivLu().solve(c);
@@ -71,6 +74,23 @@ TEST(SchurComplementSolver, IsTheCoarseChainAndExpandsToTheExactSolution) {
   const Eigen::VectorXd x2 = solver.schur().partialPivLu().solve(solver.reduce(b));
   solver.expand(x2, x);
   EXPECT_LT(test::relative_error(x, [&](Index d) { return 0.5 * chain.exact(d); }), 1e-12);
+}
+
+// A symmetric A (a two-way tie) gives S symmetric to round-off, which the Newton matrix then
+// reads by its lower triangle.
+TEST(SchurComplementSolver, SymmetricMatrixGivesASymmetricComplement) {
+  Chain chain;
+  chain.one_way_tie = false;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  chain.assemble(A);
+  SchurComplementSolver solver;
+  solver.factorize(A, {50, chain.tie_a, chain.tie_b(), 20});
+  std::printf("asymmetry of S: %.1e\n", solver.asymmetry());
+  EXPECT_LE(solver.asymmetry(), SchurComplementSolver::symmetric_within);
+  EXPECT_TRUE(solver.symmetric());
+  const Eigen::MatrixXd& S = solver.schur();
+  EXPECT_LE((S - S.transpose()).norm(), 1e-13 * S.norm());
 }
 
 TEST(SchurComplementSolver, FailsOnEveryRankWhenTheRestIsSingular) {
