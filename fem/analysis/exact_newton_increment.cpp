@@ -124,7 +124,9 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     if (refactor) {
       t0 = std::chrono::steady_clock::now();
       try {
-        schur.factorize(*K, sys.dofs());
+        // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
+        // residual check after each increment would catch a K that is not.
+        schur.factorize(*K, sys.dofs(), linear);
       } catch (const SolverError& e) {
         log.failure = e.what();
         return false;

@@ -17,13 +17,14 @@ struct SchurComplementSolver::Impl {
 SchurComplementSolver::SchurComplementSolver() : impl_(std::make_unique<Impl>()) {}
 SchurComplementSolver::~SchurComplementSolver() = default;
 
-void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs) {
+void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs,
+                                      bool symmetric) {
   const auto t0 = std::chrono::steady_clock::now();
   dofs_ = schur_dofs;
   std::sort(dofs_.begin(), dofs_.end());
   const std::vector<long long> vars(dofs_.begin(), dofs_.end());
   schur_.resize(0, 0); // the old S is not needed while MUMPS factorises (its peak)
-  impl_->direct.factorize_with_schur(A.impl_->matrix, vars);
+  impl_->direct.factorize_with_schur(A.impl_->matrix, vars, symmetric);
   // Moved out of the direct solver: S is kept once, here (it was three times).
   const std::vector<double> s = impl_->direct.take_schur();
   const Index m = static_cast<Index>(dofs_.size());

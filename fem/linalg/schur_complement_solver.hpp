@@ -31,7 +31,10 @@ public:
   /// Factorises A with `schur_dofs` (global DOFs, any order, no duplicates) as I
   /// (collective). Throws bipot::SolverError on every rank if the factorisation fails
   /// (A_BB singular: some part of the model is held only through I).
-  void factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs);
+  /// `symmetric`: A is symmetric (a linear elastic bulk); MUMPS then factorises LDLᵀ from
+  /// its lower triangle, with half the factors (memory, factorisation, reduce and expand).
+  void factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs,
+                 bool symmetric = false);
 
   /// The DOFs of I in the order of schur() rows and columns (sorted).
   const std::vector<Index>& schur_dofs() const { return dofs_; }

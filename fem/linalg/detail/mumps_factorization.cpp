@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -30,11 +31,14 @@ std::string mumps_error(int code, int detail) {
 
 class MumpsFactorization final : public RootFactorization {
 public:
-  MumpsFactorization() {
+  explicit MumpsFactorization(bool symmetric) : symmetric_(symmetric) {
     id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
     id_.par = 1; // this process works (there is only one)
-    id_.sym = 0; // general unsymmetric: friction makes the contact tangent unsymmetric
-    call(-1);    // initialise
+    // General unsymmetric by default: friction makes the contact tangent unsymmetric. A
+    // symmetric matrix (a linear elastic bulk) is factorised LDLᵀ (SYM = 2, indefinite:
+    // constrained rows and rigid-body rows need not keep it positive definite).
+    id_.sym = symmetric ? 2 : 0;
+    call(-1); // initialise
     // Silence all output: failures come back as INFOG codes and are thrown.
     id_.icntl[0] = -1;
     id_.icntl[1] = -1;
@@ -51,16 +55,20 @@ public:
 
   void analyse(const RootCsr& s) override {
     const std::size_t n = s.size();
-    irn_.resize(s.cols.size());
-    jcn_.resize(s.cols.size());
+    // A symmetric matrix is given by its lower triangle: MUMPS sums (i, j) and (j, i).
+    kept_.clear();
+    irn_.clear();
+    jcn_.clear();
     for (std::size_t r = 0; r < n; ++r)
       for (std::size_t k = s.row_ptr[r]; k < s.row_ptr[r + 1]; ++k) {
-        irn_[k] = static_cast<MUMPS_INT>(r + 1); // MUMPS counts from 1
-        jcn_[k] = static_cast<MUMPS_INT>(s.cols[k] + 1);
+        if (symmetric_ && static_cast<std::size_t>(s.cols[k]) > r) continue;
+        if (symmetric_) kept_.push_back(k);
+        irn_.push_back(static_cast<MUMPS_INT>(r + 1)); // MUMPS counts from 1
+        jcn_.push_back(static_cast<MUMPS_INT>(s.cols[k] + 1));
       }
-    values_.assign(s.cols.size(), 0.0);
+    values_.assign(irn_.size(), 0.0);
     id_.n = static_cast<MUMPS_INT>(n);
-    id_.nnz = static_cast<MUMPS_INT8>(s.cols.size());
+    id_.nnz = static_cast<MUMPS_INT8>(irn_.size());
     id_.irn = irn_.data();
     id_.jcn = jcn_.data();
     id_.a = values_.data();
@@ -68,7 +76,11 @@ public:
   }
 
   void factorize(const std::vector<double>& values) override {
-    std::copy(values.begin(), values.end(), values_.begin());
+    if (symmetric_)
+      for (std::size_t t = 0; t < kept_.size(); ++t)
+        values_[t] = values[kept_[t]];
+    else
+      std::copy(values.begin(), values.end(), values_.begin());
     // S is written here and handed over by take_schur() (no copy kept: 77 MB at |I| = 3100);
     // the solves after the factorisation do not read it.
     const std::size_t m = schur_vars_.size();
@@ -119,6 +131,25 @@ public:
 
   std::vector<double> take_schur() override {
     id_.schur = nullptr;
+    if (symmetric_) {
+      // MUMPS fills one triangle of a symmetric S (ICNTL(19) = 1); mirror whichever it is.
+      const std::size_t m = schur_vars_.size();
+      double lower = 0, upper = 0;
+      for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+          lower += std::abs(schur_[i * m + j]);
+          upper += std::abs(schur_[j * m + i]);
+        }
+      for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t j = 0; j < i; ++j) {
+          double& l = schur_[i * m + j];
+          double& u = schur_[j * m + i];
+          if (lower >= upper)
+            u = l;
+          else
+            l = u;
+        }
+    }
     return std::move(schur_);
   }
 
@@ -163,6 +194,8 @@ private:
     if (id_.infog[0] < 0) throw std::runtime_error(mumps_error(id_.infog[0], id_.infog[1]));
   }
 
+  bool symmetric_;
+  std::vector<std::size_t> kept_; ///< symmetric: positions of the lower triangle's entries
   DMUMPS_STRUC_C id_{};
   std::vector<MUMPS_INT> schur_vars_; ///< 1-based, as MUMPS counts
   std::vector<double> schur_, reduced_;
@@ -172,8 +205,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<RootFactorization> make_mumps_factorization() {
-  return std::make_unique<MumpsFactorization>();
+std::unique_ptr<RootFactorization> make_mumps_factorization(bool symmetric) {
+  return std::make_unique<MumpsFactorization>(symmetric);
 }
 
 } // namespace bipot::detail

@@ -45,7 +45,9 @@ public:
 };
 
 /// MUMPS multifrontal LU with the ordering MUMPS chooses (mumps_factorization.cpp).
-std::unique_ptr<RootFactorization> make_mumps_factorization();
+/// `symmetric`: the matrices are symmetric; MUMPS then factorises LDLᵀ from their lower
+/// triangle (half the factors' memory and time).
+std::unique_ptr<RootFactorization> make_mumps_factorization(bool symmetric = false);
 /// Amesos2 KLU2: left-looking LU with AMD ordering (klu2_factorization.cpp).
 std::unique_ptr<RootFactorization> make_klu2_factorization();
 

@@ -63,6 +63,7 @@ struct RootedDirectSolver::Impl {
   RootCsr structure;
   std::unique_ptr<RootFactorization> lu;
   std::vector<long long> schur_vars; ///< Schur variables of the analysis (empty: none)
+  bool symmetric = false;            ///< the analysis is for symmetric matrices (LDLᵀ)
   std::vector<double> schur;         ///< the Schur complement, every rank
   std::vector<double> work;          ///< rank 0: partial solution between reduce and expand
 
@@ -89,7 +90,7 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
     structure.row_ptr.assign(all_sizes.size() + 1, 0);
     for (std::size_t r = 0; r < all_sizes.size(); ++r)
       structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
-    lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization();
+    lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization(symmetric);
     if (!schur_vars.empty()) lu->set_schur_variables(schur_vars);
     lu->analyse(structure);
   });
@@ -118,11 +119,13 @@ void RootedDirectSolver::factorize(const Teuchos::RCP<CrsMatrix>& A) {
 }
 
 void RootedDirectSolver::factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
-                                              const std::vector<long long>& schur_dofs) {
+                                              const std::vector<long long>& schur_dofs,
+                                              bool symmetric) {
   auto& im = *impl_;
-  if (im.source.get() != A.get() || im.schur_vars != schur_dofs) {
+  if (im.source.get() != A.get() || im.schur_vars != schur_dofs || im.symmetric != symmetric) {
     im.source = Teuchos::null; // not reusable if the analysis throws
     im.schur_vars = schur_dofs;
+    im.symmetric = symmetric;
     im.gather_structure(*A);
     im.source = A;
   }

@@ -33,8 +33,9 @@ public:
   /// only, collective): afterwards take_schur() hands over S = A_II − A_IB A_BB⁻¹ A_BI on
   /// every rank (row-major; once per factorisation: no copy is kept). A new set of Schur variables
   /// repeats the analysis.
+  /// `symmetric`: A is symmetric and is factorised LDLᵀ from its lower triangle.
   void factorize_with_schur(const Teuchos::RCP<CrsMatrix>& A,
-                            const std::vector<long long>& schur_dofs);
+                            const std::vector<long long>& schur_dofs, bool symmetric = false);
   std::vector<double> take_schur();
   /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b (collective). Keeps the
   /// partial solution for the next expand().

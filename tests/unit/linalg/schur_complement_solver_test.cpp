@@ -91,6 +91,23 @@ TEST(SchurComplementSolver, SymmetricMatrixGivesASymmetricComplement) {
   EXPECT_TRUE(solver.symmetric());
   const Eigen::MatrixXd& S = solver.schur();
   EXPECT_LE((S - S.transpose()).norm(), 1e-13 * S.norm());
+
+  // The same with an LDLᵀ factorisation from the lower triangle: S (all of it, mirrored)
+  // and the expanded solution as exact as with the LU.
+  SchurComplementSolver ldlt;
+  ldlt.factorize(A, {50, chain.tie_a, chain.tie_b(), 20}, true);
+  std::printf("LDL^T: |S - S_LU| / |S_LU| = %.1e\n", (ldlt.schur() - S).norm() / S.norm());
+  EXPECT_LE((ldlt.schur() - S).norm(), 1e-12 * S.norm());
+  EXPECT_EQ((ldlt.schur() - ldlt.schur().transpose()).norm(), 0.0);
+  DistributedVector b(dist), x(dist);
+  chain.assemble_rhs(b);
+  const Eigen::VectorXd x_kept = ldlt.schur().partialPivLu().solve(ldlt.reduce(b));
+  ldlt.expand(x_kept, x);
+  DistributedVector x_lu(dist);
+  solver.expand(solver.schur().partialPivLu().solve(solver.reduce(b)), x_lu);
+  x_lu.axpy(-1.0, x);
+  std::printf("LDL^T: |x - x_LU| / |x_LU| = %.1e\n", x_lu.norm2() / x.norm2());
+  EXPECT_LE(x_lu.norm2(), 1e-12 * x.norm2());
 }
 
 TEST(SchurComplementSolver, FailsOnEveryRankWhenTheRestIsSingular) {
