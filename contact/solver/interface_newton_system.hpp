@@ -40,8 +40,9 @@ struct CondensedSize {
 CondensedSize condensed_size(const std::vector<const Interface*>& interfaces, int dim);
 
 /// The largest condensed system generalized_newton accepts: its LU costs (2/3) n³ per
-/// factorisation and S and J hold 2 n² doubles (2.3 GB at 12,000); past it semismooth_newton
-/// (sparse, the whole mesh) is the better tool.
+/// factorisation and S (at most n² doubles) and the single-precision factors (n² floats)
+/// hold up to 1.5 n² doubles' worth (1.7 GB at 12,000); past it semismooth_newton (sparse,
+/// the whole mesh) is the better tool.
 constexpr Index max_condensed_unknowns = 12000;
 /// The message refusing a larger one ("" when it fits), prefixed by `where`.
 std::string condensed_size_problem(const CondensedSize& size, const std::string& where);

@@ -193,8 +193,10 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     };
     ReusedLuSolver& newton_solver = path ? path_matrix : newton_matrix;
     // Single-precision factors: GMRES stays in double and meets the same tolerances, with
-    // half the bytes streamed per preconditioner application (docs/theory.md).
-    newton_solver.set_single_precision_factors(true);
+    // half the bytes streamed per preconditioner application (docs/theory.md). A nonlinear
+    // bulk changes S, hence the factors, at every outer iteration: few solves per factors,
+    // and double precision keeps its inner iteration counts (and cut-backs) as they were.
+    newton_solver.set_single_precision_factors(linear);
     for (int it = 0;; ++it, ++log.iterations) {
       t0 = std::chrono::steady_clock::now();
       residual(z, F, &J);
