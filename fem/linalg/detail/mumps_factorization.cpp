@@ -8,7 +8,6 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -56,9 +55,20 @@ public:
   void analyse(const RootCsr& s) override {
     const std::size_t n = s.size();
     // A symmetric matrix is given by its lower triangle: MUMPS sums (i, j) and (j, i).
+    std::size_t entries = s.cols.size();
+    if (symmetric_) {
+      entries = 0;
+      for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t k = s.row_ptr[r]; k < s.row_ptr[r + 1]; ++k)
+          entries += static_cast<std::size_t>(s.cols[k]) <= r;
+    }
+    // Exact sizes: growing by push_back could hold up to twice these arrays (100s of MB).
     kept_.clear();
     irn_.clear();
     jcn_.clear();
+    kept_.reserve(symmetric_ ? entries : 0);
+    irn_.reserve(entries);
+    jcn_.reserve(entries);
     for (std::size_t r = 0; r < n; ++r)
       for (std::size_t k = s.row_ptr[r]; k < s.row_ptr[r + 1]; ++k) {
         if (symmetric_ && static_cast<std::size_t>(s.cols[k]) > r) continue;
@@ -132,23 +142,12 @@ public:
   std::vector<double> take_schur() override {
     id_.schur = nullptr;
     if (symmetric_) {
-      // MUMPS fills one triangle of a symmetric S (ICNTL(19) = 1); mirror whichever it is.
+      // MUMPS returns the lower triangle by rows (ICNTL(19) = 1, SYM = 2) and writes the
+      // other triangle too, from workspace it did not initialise: mirror the lower one.
       const std::size_t m = schur_vars_.size();
-      double lower = 0, upper = 0;
       for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = 0; j < i; ++j) {
-          lower += std::abs(schur_[i * m + j]);
-          upper += std::abs(schur_[j * m + i]);
-        }
-      for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = 0; j < i; ++j) {
-          double& l = schur_[i * m + j];
-          double& u = schur_[j * m + i];
-          if (lower >= upper)
-            u = l;
-          else
-            l = u;
-        }
+        for (std::size_t j = 0; j < i; ++j)
+          schur_[j * m + i] = schur_[i * m + j];
     }
     return std::move(schur_);
   }

@@ -93,6 +93,9 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
     lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization(symmetric);
     if (!schur_vars.empty()) lu->set_schur_variables(schur_vars);
     lu->analyse(structure);
+    // MUMPS copied the indices it needs: the gathered columns (8 bytes per entry) can go.
+    // KLU2 keeps reading them at every factorisation.
+    if (package != "klu2") std::vector<long long>().swap(structure.cols);
   });
 }
 
