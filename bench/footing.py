@@ -11,7 +11,7 @@ k/8 for each --cells k. Reports DOFs, Newton iterations per increment, the time 
 One run per size (run it with `nice`: the machine is shared).
 
 Usage: bench/footing.py [--bipot build/apps/bipot/bipot] [--cells 12,38] [--increments 20]
-Prints a Markdown table for docs/performance.md.
+Prints a Markdown table for docs/performance_plasticity.md.
 """
 import argparse
 import csv

@@ -77,15 +77,18 @@ void InterfaceNewtonSystem::set_multipliers(const Eigen::VectorXd& lambda) const
   }
 }
 
-void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
-                                Eigen::MatrixXd* J) const {
+template <class AddEntry>
+void InterfaceNewtonSystem::add_terms(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+                                      AddEntry* jac) const {
   const int d = dim_;
   for (const PairSlots& s : pairs_) {
     const double A = s.iface->interface().pairs[s.pair].weight;
     const Index m = s.multiplier;
     if (!(A > 0)) { // a pair without area carries no force: λ stays at A r̂ = 0
       F.segment(m, d).setZero();
-      if (J) J->block(m, m, d, d) += Eigen::MatrixXd::Identity(d, d);
+      if (jac)
+        for (int c = 0; c < d; ++c)
+          (*jac)(m + c, m + c, 1.0);
       continue;
     }
     const PairResult& res = s.iface->results()[s.pair];
@@ -103,7 +106,7 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
       if (!held_b(c)) F(s.b + c) += force(c);
       if (!constrained[s.a + c]) F(s.a + c) -= force(c);
     }
-    if (!J) continue;
+    if (!jac) continue;
     // d(adhesive)/d(jump), β's dependence on the jump included.
     const Eigen::MatrixXd D = der.dt_djump - der.dr_djump;
     const Eigen::MatrixXd Kc = A * Q * D * Q.transpose();         // ∂(force on b)/∂x_b
@@ -112,21 +115,23 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
       const bool free_b = !held_b(r), free_a = !constrained[s.a + r];
       for (int c = 0; c < d; ++c) {
         if (free_b) {
-          (*J)(s.b + r, s.b + c) += Kc(r, c);
-          (*J)(s.b + r, s.a + c) -= Kc(r, c);
-          (*J)(s.b + r, m + c) += Q(r, c);
+          (*jac)(s.b + r, s.b + c, Kc(r, c));
+          (*jac)(s.b + r, s.a + c, -Kc(r, c));
+          (*jac)(s.b + r, m + c, Q(r, c));
         }
         if (free_a) {
-          if (has_b) (*J)(s.a + r, s.b + c) -= Kc(r, c);
-          (*J)(s.a + r, s.a + c) += Kc(r, c);
-          (*J)(s.a + r, m + c) -= Q(r, c);
+          if (has_b) (*jac)(s.a + r, s.b + c, -Kc(r, c));
+          (*jac)(s.a + r, s.a + c, Kc(r, c));
+          (*jac)(s.a + r, m + c, -Q(r, c));
         }
-        if (has_b) (*J)(m + r, s.b + c) += Cx(r, c);
-        (*J)(m + r, s.a + c) -= Cx(r, c);
+        if (has_b) (*jac)(m + r, s.b + c, Cx(r, c));
+        (*jac)(m + r, s.a + c, -Cx(r, c));
       }
     }
     const Eigen::MatrixXd dF_dlambda = Eigen::MatrixXd::Identity(d, d) - der.dr_dr;
-    J->block(m, m, d, d) += dF_dlambda;
+    for (int r = 0; r < d; ++r)
+      for (int c = 0; c < d; ++c)
+        (*jac)(m + r, m + c, dF_dlambda(r, c));
     // A component that the law leaves free (stick: ∂F_λ/∂λ = 0) and that acts only on
     // prescribed DOFs (both nodes held in its direction, e.g. a pile head pair whose two copies
     // are pulled together) is undetermined: any value satisfies the equations and the
@@ -136,9 +141,21 @@ void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::Vec
       bool acts = dF_dlambda.col(c).norm() != 0.0;
       for (int r = 0; r < d && !acts; ++r)
         acts = Q(r, c) != 0.0 && (!held_b(r) || !constrained[s.a + r]);
-      if (!acts) (*J)(m + c, m + c) += 1.0;
+      if (!acts) (*jac)(m + c, m + c, 1.0);
     }
   }
+}
+
+void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+                                Eigen::MatrixXd* J) const {
+  auto entry = [J](Index r, Index c, double v) { (*J)(r, c) += v; };
+  add_terms(constrained, F, J ? &entry : nullptr);
+}
+
+void InterfaceNewtonSystem::add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+                                std::vector<Eigen::Triplet<double>>& J) const {
+  auto entry = [&J](Index r, Index c, double v) { J.emplace_back(r, c, v); };
+  add_terms(constrained, F, &entry);
 }
 
 double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) const {

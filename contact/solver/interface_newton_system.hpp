@@ -24,6 +24,7 @@
 #include "fem/assembly/condensed_interface_system.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 #include <string>
 #include <vector>
@@ -40,8 +41,9 @@ struct CondensedSize {
 CondensedSize condensed_size(const std::vector<const Interface*>& interfaces, int dim);
 
 /// The largest condensed system generalized_newton accepts: its LU costs (2/3) n³ per
-/// factorisation and S and J hold 2 n² doubles (2.3 GB at 12,000); past it semismooth_newton
-/// (sparse, the whole mesh) is the better tool.
+/// factorisation and S (at most n² doubles) and the single-precision factors (n² floats)
+/// hold up to 1.5 n² doubles' worth (1.7 GB at 12,000); past it semismooth_newton (sparse,
+/// the whole mesh) is the better tool.
 constexpr Index max_condensed_unknowns = 12000;
 /// The message refusing a larger one ("" when it fits), prefixed by `where`.
 std::string condensed_size_problem(const CondensedSize& size, const std::string& where);
@@ -65,6 +67,11 @@ public:
   /// term: their equation prescribes the DOF (the reaction takes the interface force).
   void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
            Eigen::MatrixXd* J) const override;
+  /// The same with J's interface terms as (row, column, value) entries appended to `J` (a
+  /// few per pair; duplicates are to be summed): the sparse part of the Newton matrix, whose
+  /// dense part is the condensed bulk alone.
+  void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+           std::vector<Eigen::Triplet<double>>& J) const override;
 
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const override;
@@ -76,6 +83,10 @@ public:
   double released_adhesion_energy(Eigen::VectorXd* grad) const override;
 
 private:
+  /// add() with each Jacobian entry passed to jac(row, column, value) (null: F only).
+  template <class AddEntry>
+  void add_terms(const std::vector<bool>& constrained, Eigen::VectorXd& F, AddEntry* jac) const;
+
   struct PairSlots {
     InterfaceAssembler* iface;
     std::size_t pair;

@@ -11,6 +11,7 @@
 #include "fem/core/types.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include <vector>
 
@@ -37,6 +38,11 @@ public:
   /// term. Touches rows and columns below size() only (a bordered J passes as it is).
   virtual void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
                    Eigen::MatrixXd* J) const = 0;
+  /// The same with J's interface terms as (row, column, value) entries appended to `J`
+  /// (duplicates are to be summed): the sparse part of the Newton matrix, whose dense part is
+  /// the condensed bulk alone (CondensedNewtonMatrix).
+  virtual void add(const std::vector<bool>& constrained, Eigen::VectorXd& F,
+                   std::vector<Eigen::Triplet<double>>& J) const = 0;
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   virtual double multiplier_residual(const Eigen::VectorXd& F) const = 0;
   /// The energy adhesion loss has released since the last converged increment, at the last

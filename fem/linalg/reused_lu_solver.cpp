@@ -4,9 +4,60 @@
 
 #include <algorithm>
 
+namespace bipot::detail {
+class CondensedOperator;
+}
+
+// Eigen's matrix-free protocol (its "matrix-free solvers" example): GMRES sees a
+// CondensedNewtonMatrix as a sparse-shaped operator whose product with a vector is −S x + P x.
+namespace Eigen::internal {
+template <>
+struct traits<bipot::detail::CondensedOperator> : public traits<Eigen::SparseMatrix<double>> {};
+} // namespace Eigen::internal
+
+namespace bipot::detail {
+class CondensedOperator : public Eigen::EigenBase<CondensedOperator> {
+public:
+  using Scalar = double;
+  using RealScalar = double;
+  using StorageIndex = int;
+  enum {
+    ColsAtCompileTime = Eigen::Dynamic,
+    MaxColsAtCompileTime = Eigen::Dynamic,
+    IsRowMajor = false
+  };
+  explicit CondensedOperator(const CondensedNewtonMatrix& J) : J(&J) {}
+  Eigen::Index rows() const { return J->rows(); }
+  Eigen::Index cols() const { return J->cols(); }
+  template <class Rhs>
+  Eigen::Product<CondensedOperator, Rhs, Eigen::AliasFreeProduct>
+  operator*(const Eigen::MatrixBase<Rhs>& x) const {
+    return Eigen::Product<CondensedOperator, Rhs, Eigen::AliasFreeProduct>(*this, x.derived());
+  }
+  const CondensedNewtonMatrix* J;
+};
+} // namespace bipot::detail
+
+namespace Eigen::internal {
+template <class Rhs>
+struct generic_product_impl<bipot::detail::CondensedOperator, Rhs, SparseShape, DenseShape,
+                            GemvProduct>
+    : generic_product_impl_base<bipot::detail::CondensedOperator, Rhs,
+                                generic_product_impl<bipot::detail::CondensedOperator, Rhs>> {
+  template <class Dst>
+  static void scaleAndAddTo(Dst& dst, const bipot::detail::CondensedOperator& lhs, const Rhs& rhs,
+                            const double& alpha) {
+    lhs.J->add_product(dst, rhs, alpha);
+  }
+};
+} // namespace Eigen::internal
+
 namespace bipot {
 
 namespace {
+
+using Factors = Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>;
+using SingleFactors = Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXf>>;
 
 // Eigen's preconditioner concept around factors computed elsewhere: GMRES calls compute() on
 // the new matrix, which must not refactorise it (that is the point).
@@ -15,7 +66,8 @@ struct EarlierFactors {
   using RealScalar = double;
   using StorageIndex = Eigen::Index;
   enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
-  const Eigen::PartialPivLU<Eigen::MatrixXd>* lu = nullptr;
+  const Factors* lu = nullptr;
+  const SingleFactors* lu_single = nullptr; // used if set
 
   EarlierFactors() = default;
   template <class M> explicit EarlierFactors(const M&) {}
@@ -23,32 +75,90 @@ struct EarlierFactors {
   template <class M> EarlierFactors& factorize(const M&) { return *this; }
   template <class M> EarlierFactors& compute(const M&) { return *this; }
   template <class R> Eigen::VectorXd solve(const Eigen::MatrixBase<R>& b) const {
+    if (lu_single) return lu_single->solve(b.template cast<float>()).template cast<double>();
     return lu->solve(b);
   }
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 };
 
+// What GMRES iterates on: the dense matrix itself, or the operator around the condensed one.
+const Eigen::MatrixXd& gmres_matrix(const Eigen::MatrixXd& J) {
+  return J;
+}
+detail::CondensedOperator gmres_matrix(const CondensedNewtonMatrix& J) {
+  return detail::CondensedOperator(J);
+}
+template <class Scalar>
+void make_dense(const Eigen::MatrixXd& J,
+                Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& out) {
+  out = J.cast<Scalar>();
+}
+template <class Scalar>
+void make_dense(const CondensedNewtonMatrix& J,
+                Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& out) {
+  J.to_dense(out);
+}
+
 } // namespace
 
-Eigen::VectorXd ReusedLuSolver::factorize_and_solve(const Eigen::MatrixXd& J,
-                                                    const Eigen::VectorXd& b) {
-  lu_.compute(J);
+template <class Matrix> void ReusedLuSolver::factorize(const Matrix& J, bool single) {
+  // The LU objects refer to the arrays, which may be reallocated; only one precision is kept.
+  lu_.reset();
+  lu_single_.reset();
+  if (single) {
+    factors_.resize(0, 0);
+    make_dense(J, factors_single_);
+    lu_single_ = std::make_unique<SingleFactors>(factors_single_);
+  } else {
+    factors_single_.resize(0, 0);
+    make_dense(J, factors_);
+    lu_ = std::make_unique<Factors>(factors_);
+  }
+  factor_rows_ = J.rows();
   factorized_ = true;
   ++factorizations_;
-  last_iterations_ = 0;
-  return lu_.solve(b);
+  last_iterations_ = 0; // a solve's count: the iterations on the factors it ends with
 }
 
 Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b,
                                       double accept) {
+  return solve_any(J, b, accept);
+}
+
+Eigen::VectorXd ReusedLuSolver::solve(const CondensedNewtonMatrix& J, const Eigen::VectorXd& b,
+                                      double accept) {
+  return solve_any(J, b, accept);
+}
+
+template <class Matrix>
+Eigen::VectorXd ReusedLuSolver::solve_any(const Matrix& J, const Eigen::VectorXd& b,
+                                          double accept) {
   accept = std::max(accept, accept_);
+  last_iterations_ = 0;
+  if (b.norm() == 0.0) return Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd x;
+  if (factorized_ && factor_rows_ == J.rows() && refine(J, b, accept, x)) return x;
+  // No factors, or too far off: factorise J. Double-precision factors solve directly;
+  // single-precision ones through GMRES, and if even that fails J is factorised in double.
+  if (single_) {
+    factorize(J, true);
+    if (refine(J, b, accept, x)) return x;
+  }
+  factorize(J, false);
+  return lu_->solve(b);
+}
+
+template <class Matrix>
+bool ReusedLuSolver::refine(const Matrix& J, const Eigen::VectorXd& b, double accept,
+                            Eigen::VectorXd& x) {
   const double b_norm = b.norm();
-  if (b_norm == 0.0) return Eigen::VectorXd::Zero(b.size());
-  if (!factorized_ || lu_.rows() != J.rows()) return factorize_and_solve(J, b);
-  Eigen::GMRES<Eigen::MatrixXd, EarlierFactors> gmres;
+  const auto op = gmres_matrix(J);
+  using Op = std::decay_t<decltype(op)>;
+  Eigen::GMRES<Op, EarlierFactors> gmres;
   gmres.set_restart(max_iterations_);
-  gmres.compute(J);
-  gmres.preconditioner().lu = &lu_;
+  gmres.compute(op);
+  gmres.preconditioner().lu = lu_.get();
+  gmres.preconditioner().lu_single = lu_single_.get();
   // Eigen's GMRES stops on the preconditioned residual; the true one (one product to check)
   // is larger by up to the conditioning of the earlier factors: 1e-12 became 1e-10 to 1e-8 on
   // the pile's matrices. A GMRES solve of the true residual (iterative refinement) recovers
@@ -57,10 +167,11 @@ Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::Vec
   // the factorised one (a few pairs changed) is solved exactly, as a direct solver would, and
   // Newton keeps its finite termination on piecewise-linear problems. Past that the solve is
   // expensive, and `accept` (the caller's forcing term) is enough.
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size()), r = b;
-  last_iterations_ = 0;
+  x = Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd r = b;
   const bool loose = accept > accept_;
   bool expensive = false; // the first pass ran out of its cheap iterations
+  bool met = false;
   for (int pass = 0; pass < (loose ? 4 : 3); ++pass) {
     const bool first = loose && pass == 0;
     gmres.setTolerance(expensive ? std::max(tolerance_, 0.1 * accept) : tolerance_);
@@ -74,12 +185,12 @@ Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::Vec
     r = b - J * x;
     const double residual = r.norm();
     if (residual <= accept_ * b_norm || (expensive && residual <= accept * b_norm)) {
-      iterations_ += last_iterations_;
-      return x;
+      met = true;
+      break;
     }
   }
   iterations_ += last_iterations_;
-  return factorize_and_solve(J, b);
+  return met;
 }
 
 } // namespace bipot

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace bipot {
 
@@ -16,17 +17,28 @@ struct SchurComplementSolver::Impl {
 SchurComplementSolver::SchurComplementSolver() : impl_(std::make_unique<Impl>()) {}
 SchurComplementSolver::~SchurComplementSolver() = default;
 
-void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs) {
+void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs,
+                                      bool symmetric) {
   const auto t0 = std::chrono::steady_clock::now();
   dofs_ = schur_dofs;
   std::sort(dofs_.begin(), dofs_.end());
   const std::vector<long long> vars(dofs_.begin(), dofs_.end());
-  impl_->direct.factorize(A.impl_->matrix, vars);
-  const std::vector<double>& s = impl_->direct.schur();
+  schur_.resize(0, 0); // the old S is not needed while MUMPS factorises (its peak)
+  impl_->direct.factorize(A.impl_->matrix, vars, symmetric);
+  // Moved out of the direct solver: S is kept once, here.
+  const std::vector<double> s = impl_->direct.take_schur();
   const Index m = static_cast<Index>(dofs_.size());
-  // MUMPS returns an unsymmetric Schur complement by rows (ICNTL(19) = 1).
+  // By rows (ICNTL(19) = 1); a symmetric one mirrored from its lower triangle.
   schur_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
       s.data(), m, m);
+  // Relative asymmetry max |S_ij − S_ji| / max |S_ij|, by columns of the lower triangle.
+  double worst = 0, largest = 0;
+  for (Index j = 0; j < m; ++j)
+    for (Index i = j; i < m; ++i) {
+      worst = std::max(worst, std::abs(schur_(i, j) - schur_(j, i)));
+      largest = std::max(largest, std::abs(schur_(i, j)));
+    }
+  asymmetry_ = largest > 0 ? worst / largest : 0.0;
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -32,7 +32,10 @@ public:
   /// Factorises A with `schur_dofs` (global DOFs, any order, no duplicates) as I
   /// (collective). Throws bipot::SolverError on every rank if the factorisation fails
   /// (A_BB singular: some part of the model is held only through I).
-  void factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs);
+  /// `symmetric`: A is symmetric (a linear elastic bulk); MUMPS then factorises LDLᵀ from
+  /// its lower triangle, with half the factors (memory, factorisation, reduce and expand).
+  void factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs,
+                 bool symmetric = false);
 
   /// The DOFs of I in the order of schur() rows and columns (sorted).
   const std::vector<Index>& schur_dofs() const { return dofs_; }
@@ -45,6 +48,13 @@ public:
   /// (collective; `x_schur` must be the same on every rank).
   void expand(const Eigen::VectorXd& x_schur, DistributedVector& x);
 
+  /// max |S_ij − S_ji| / max |S_ij|: round-off (~1e-15) when A is symmetric, as a linear
+  /// elastic bulk is; then S x can read one triangle only (half the bytes).
+  double asymmetry() const { return asymmetry_; }
+  /// S is symmetric to round-off.
+  bool symmetric() const { return asymmetry_ <= symmetric_within; }
+  static constexpr double symmetric_within = 1e-12;
+
   /// Seconds in the last factorize() (analysis included when it ran).
   double setup_seconds() const { return setup_seconds_; }
 
@@ -54,6 +64,7 @@ private:
   std::vector<Index> dofs_;
   Eigen::MatrixXd schur_;
   double setup_seconds_ = 0;
+  double asymmetry_ = 0;
 };
 
 } // namespace bipot

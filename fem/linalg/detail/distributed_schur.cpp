@@ -31,9 +31,41 @@ struct DistributedSchur::Impl {
   Teuchos::RCP<CrsMatrix> source; ///< the matrix whose structure was analysed
   std::vector<long long> schur_dofs;
   std::vector<MUMPS_INT> irn, jcn, listvar; ///< 1-based, as MUMPS counts
+  std::vector<std::size_t> kept; ///< symmetric: positions of the lower triangle's entries
   std::vector<double> values, schur, rhs, redrhs;
   std::vector<int> owned_counts, owned_offsets; ///< rows per rank, for b and x
   bool initialised = false;
+  bool symmetric = false; ///< the instance factorises LDLᵀ (SYM = 2)
+
+  // MUMPS fixes SYM when an instance is created (JOB = -1): another symmetry needs a new one.
+  // General unsymmetric by default (friction makes a contact tangent unsymmetric); a
+  // symmetric matrix (a linear elastic bulk) is factorised LDLᵀ, indefinite (SYM = 2):
+  // constrained and rigid-body rows need not keep it positive definite.
+  void create(bool sym) {
+    destroy();
+    id = DMUMPS_STRUC_C{};
+    id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_WORLD));
+    id.par = 1; // the host works too
+    id.sym = sym ? 2 : 0;
+    id.job = -1;
+    dmumps_c(&id);
+    initialised = id.infog[0] >= 0;
+    if (!initialised)
+      throw SolverError("direct solver (mumps, distributed): initialisation failed, INFOG(1) = " +
+                        std::to_string(id.infog[0]));
+    symmetric = sym;
+    for (int k : {0, 1, 2})
+      id.icntl[k] = -1; // no output: failures come back as INFOG codes
+    id.icntl[3] = 0;
+    id.icntl[6] = 7; // ICNTL(7): the ordering MUMPS chooses (when the analysis is centralised)
+  }
+
+  void destroy() {
+    if (!initialised) return;
+    id.job = -2; // collective, as the instance was created
+    dmumps_c(&id);
+    initialised = false;
+  }
 
   // Every rank calls; INFOG(1) is global, so every rank throws or none does.
   void call(int job, const char* what) {
@@ -54,16 +86,24 @@ struct DistributedSchur::Impl {
     const auto row_map = A.getRowMap();
     const auto col_map = A.getColMap();
     const std::size_t n_rows = A.getNodeNumRows();
-    const std::size_t nnz = local.graph.entries.extent(0);
-    irn.resize(nnz);
-    jcn.resize(nnz);
-    for (std::size_t r = 0; r < n_rows; ++r)
+    // A symmetric matrix is given by its lower triangle: MUMPS sums (i, j) and (j, i).
+    irn.clear();
+    jcn.clear();
+    kept.clear();
+    for (std::size_t r = 0; r < n_rows; ++r) {
+      const auto row = row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r));
       for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
-        irn[k] = static_cast<MUMPS_INT>(
-            row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r)) + 1);
-        jcn[k] = static_cast<MUMPS_INT>(col_map->getGlobalElement(local.graph.entries(k)) + 1);
+        const auto col = col_map->getGlobalElement(local.graph.entries(k));
+        if (symmetric && col > row) continue;
+        if (symmetric) kept.push_back(static_cast<std::size_t>(k));
+        irn.push_back(static_cast<MUMPS_INT>(row + 1));
+        jcn.push_back(static_cast<MUMPS_INT>(col + 1));
       }
-    values.assign(nnz, 0.0);
+    }
+    irn.shrink_to_fit();
+    jcn.shrink_to_fit();
+    kept.shrink_to_fit();
+    values.assign(irn.size(), 0.0);
     const int n_owned = static_cast<int>(n_rows);
     owned_counts.assign(size, 0);
     MPI_Allgather(&n_owned, 1, MPI_INT, owned_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
@@ -71,7 +111,7 @@ struct DistributedSchur::Impl {
     const std::size_t n = A.getGlobalNumRows();
     id.n = static_cast<MUMPS_INT>(n);
     id.icntl[17] = 3; // ICNTL(18) = 3: distributed assembled matrix, entries given by each rank
-    id.nnz_loc = static_cast<MUMPS_INT8>(nnz);
+    id.nnz_loc = static_cast<MUMPS_INT8>(irn.size());
     id.irn_loc = irn.data();
     id.jcn_loc = jcn.data();
     id.a_loc = values.data();
@@ -79,14 +119,12 @@ struct DistributedSchur::Impl {
     listvar.resize(m);
     for (std::size_t i = 0; i < m; ++i)
       listvar[i] = static_cast<MUMPS_INT>(schur_dofs[i] + 1);
-    schur.assign(rank == 0 ? m * m : 0, 0.0);
     redrhs.assign(m, 0.0);
     rhs.assign(rank == 0 ? n : 0, 0.0);
-    // ICNTL(19) = 1: the Schur complement centralised on the host (rank 0), by rows for an
-    // unsymmetric matrix; the list of its variables is read on the host.
+    // ICNTL(19) = 1: the Schur complement centralised on the host (rank 0), by rows (its
+    // lower triangle for a symmetric matrix); the list of its variables is read on the host.
     id.size_schur = static_cast<MUMPS_INT>(m);
     id.listvar_schur = listvar.data();
-    id.schur = rank == 0 ? schur.data() : nullptr;
     id.schur_lld = static_cast<MUMPS_INT>(m);
     id.icntl[18] = m > 0 ? 1 : 0;
     // ICNTL(24) = 1: count null pivots (INFOG(28)); a singular A_BB is otherwise not reported.
@@ -96,39 +134,34 @@ struct DistributedSchur::Impl {
 };
 
 DistributedSchur::DistributedSchur() : impl_(std::make_unique<Impl>()) {
-  auto& id = impl_->id;
-  id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_WORLD));
-  id.par = 1; // the host works too
-  id.sym = 0; // general unsymmetric
-  id.job = -1;
-  dmumps_c(&id);
-  impl_->initialised = id.infog[0] >= 0;
-  if (!impl_->initialised)
-    throw SolverError("direct solver (mumps, distributed): initialisation failed, INFOG(1) = " +
-                      std::to_string(id.infog[0]));
-  for (int k : {0, 1, 2})
-    id.icntl[k] = -1; // no output: failures come back as INFOG codes
-  id.icntl[3] = 0;
-  id.icntl[6] = 7; // ICNTL(7): the ordering MUMPS chooses (used when the analysis is centralised)
+  impl_->create(false);
 }
 
 DistributedSchur::~DistributedSchur() {
-  if (!impl_->initialised) return;
-  impl_->id.job = -2; // collective, as the instance was created
-  dmumps_c(&impl_->id);
+  impl_->destroy();
 }
 
 void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
-                                 const std::vector<long long>& schur_dofs) {
+                                 const std::vector<long long>& schur_dofs, bool symmetric) {
   auto& im = *impl_;
-  if (im.source.get() != A.get() || im.schur_dofs != schur_dofs) {
+  if (im.source.get() != A.get() || im.schur_dofs != schur_dofs || im.symmetric != symmetric) {
     im.source = Teuchos::null; // not reusable if the analysis throws
+    if (im.symmetric != symmetric) im.create(symmetric);
     im.schur_dofs = schur_dofs;
     im.analyse(*A);
     im.source = A;
   }
   const auto local = A->getLocalMatrixHost();
-  std::copy(local.values.data(), local.values.data() + local.values.extent(0), im.values.begin());
+  if (im.symmetric)
+    for (std::size_t t = 0; t < im.kept.size(); ++t)
+      im.values[t] = local.values(im.kept[t]);
+  else
+    std::copy(local.values.data(), local.values.data() + local.values.extent(0), im.values.begin());
+  // S is written by the host during the factorisation and handed over by take_schur(); the
+  // solves after it do not read it.
+  const std::size_t m = schur_dofs.size();
+  im.schur.assign(im.rank == 0 ? m * m : 0, 0.0);
+  im.id.schur = im.rank == 0 ? im.schur.data() : nullptr;
   // Off-diagonal pivoting can need more workspace than the analysis estimated
   // (INFOG(1) = -8, -9): retry with a larger relaxation, as the MUMPS manual advises.
   for (int attempt = 0;; ++attempt) {
@@ -144,14 +177,24 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
     }
     break;
   }
+  im.id.schur = nullptr;
   if (!schur_dofs.empty() && im.id.infog[27] > 0)
     throw SolverError("direct solver (mumps, distributed) factorisation failed: numerically "
                       "singular matrix outside the Schur variables (" +
                       std::to_string(im.id.infog[27]) + " null pivots, MUMPS INFOG(28))");
-  const std::size_t m = schur_dofs.size();
-  schur_.resize(m * m);
-  if (im.rank == 0) std::copy(im.schur.begin(), im.schur.end(), schur_.begin());
-  MPI_Bcast(schur_.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if (im.rank == 0 && im.symmetric) {
+    // MUMPS returns the lower triangle by rows (ICNTL(19) = 1, SYM = 2) and writes the other
+    // triangle too, from workspace it did not initialise: mirror the lower one.
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        im.schur[j * m + i] = im.schur[i * m + j];
+  }
+  im.schur.resize(m * m);
+  MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+std::vector<double> DistributedSchur::take_schur() {
+  return std::move(impl_->schur);
 }
 
 std::vector<double> DistributedSchur::reduce(const double* b_owned) {

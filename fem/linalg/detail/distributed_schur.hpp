@@ -23,10 +23,13 @@ public:
   DistributedSchur& operator=(const DistributedSchur&) = delete;
 
   /// Factorises A with the global rows `schur_dofs` (sorted) as Schur variables I; afterwards
-  /// schur() is S = A_II − A_IB A_BB⁻¹ A_BI on every rank (row-major). The analysis is
-  /// repeated only for another matrix object or another set of Schur variables.
-  void factorize(const Teuchos::RCP<CrsMatrix>& A, const std::vector<long long>& schur_dofs);
-  const std::vector<double>& schur() const { return schur_; }
+  /// take_schur() hands over S = A_II − A_IB A_BB⁻¹ A_BI on every rank (row-major; once per
+  /// factorisation: no copy is kept). `symmetric`: A is symmetric and is factorised LDLᵀ
+  /// from its lower triangle (half the factors). The analysis is repeated only for another
+  /// matrix object, another set of Schur variables or another symmetry.
+  void factorize(const Teuchos::RCP<CrsMatrix>& A, const std::vector<long long>& schur_dofs,
+                 bool symmetric = false);
+  std::vector<double> take_schur();
   /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b; keeps the partial
   /// solution (on rank 0) for the next expand().
   std::vector<double> reduce(const double* b_owned);
@@ -37,7 +40,6 @@ public:
 private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::vector<double> schur_;
 };
 
 } // namespace bipot::detail

@@ -88,6 +88,9 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
       structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
     lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization();
     lu->analyse(structure);
+    // MUMPS copied the indices it needs: the gathered columns (8 bytes per entry) can go.
+    // KLU2 keeps reading them at every factorisation.
+    if (package != "klu2") std::vector<long long>().swap(structure.cols);
   });
 }
 

@@ -90,6 +90,15 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
     };
     Eigen::MatrixXd J(6, 6);
     residual(z, &J);
+    {
+      // The sparse output of add() (the Newton matrix in operator form) holds the same terms.
+      std::vector<Eigen::Triplet<double>> entries;
+      Eigen::VectorXd F = Eigen::VectorXd::Zero(6);
+      sys.add(free, F, entries);
+      Eigen::SparseMatrix<double> P(6, 6);
+      P.setFromTriplets(entries.begin(), entries.end());
+      EXPECT_LE((Eigen::MatrixXd(P) - J).norm(), 1e-14 * J.norm()) << cs.name;
+    }
     EXPECT_EQ(ia.results()[0].status, cs.status) << cs.name;
     if (cs.debonding) {
       EXPECT_LT(ia.results()[0].beta, 1.0 - 1e-3) << cs.name;

@@ -94,5 +94,146 @@ TEST(ReusedLuSolver, LooserAcceptanceOnlyForExpensiveSolves) {
   }
 }
 
+// J = [−S 0; 0 0] + P as generalized_newton builds it: S dense on the first m unknowns, P
+// sparse (a few entries per row, the multiplier rows' identity-like diagonal), seeded.
+CondensedNewtonMatrix condensed(const Eigen::MatrixXd& S, int n, unsigned seed, double scale) {
+  CondensedNewtonMatrix J(S, n);
+  std::vector<Eigen::Triplet<double>> entries;
+  std::srand(seed);
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, i < S.rows() ? 0.0 : 1.0);
+    for (int k = 0; k < 3; ++k)
+      entries.emplace_back(i, std::rand() % n, scale * (std::rand() / double(RAND_MAX) - 0.5));
+  }
+  J.set_sparse_part(entries);
+  return J;
+}
+
+TEST(ReusedLuSolver, OperatorFormGivesTheDenseSolution) {
+  const int m = 120, n = 180;
+  const Eigen::MatrixXd S = -test_matrix(m, 5); // −S then dominates the top-left block
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -2.0, 1.0);
+  // The dense form of the operator is −S in the corner plus P.
+  const CondensedNewtonMatrix J0 = condensed(S, n, 6, 1.0);
+  Eigen::MatrixXd dense0;
+  J0.to_dense(dense0);
+  Eigen::MatrixXd expected = Eigen::MatrixXd(J0.sparse_part());
+  expected.topLeftCorner(m, m) -= S;
+  EXPECT_EQ((dense0 - expected).norm(), 0.0);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, 0.5, -0.5);
+  EXPECT_LE((J0 * x - dense0 * x).norm(), 1e-13 * (dense0 * x).norm());
+  // A sequence (factorise, then GMRES on the old factors for a changed P), once in operator
+  // form and once with the dense matrices: the same solutions to round-off.
+  const CondensedNewtonMatrix J1 = condensed(S, n, 7, 3.0);
+  Eigen::MatrixXd dense1;
+  J1.to_dense(dense1);
+  ReusedLuSolver by_operator, by_dense;
+  for (const auto* J : {&J0, &J1}) {
+    const Eigen::MatrixXd& dense = J == &J0 ? dense0 : dense1;
+    const Eigen::VectorXd xo = by_operator.solve(*J, b, 1e-11);
+    const Eigen::VectorXd xd = by_dense.solve(dense, b, 1e-11);
+    const Eigen::VectorXd exact = dense.partialPivLu().solve(b);
+    std::printf("operator form: %d GMRES iterations (dense %d), |xo - xd| / |xd| = %.1e\n",
+                by_operator.last_iterations(), by_dense.last_iterations(),
+                (xo - xd).norm() / xd.norm());
+    EXPECT_LE((xo - xd).norm(), 1e-12 * xd.norm());
+    EXPECT_LE((xo - exact).norm(), 1e-10 * exact.norm());
+    EXPECT_LT(relative_residual(dense, xo, b), 1e-11);
+    EXPECT_EQ(by_operator.last_iterations(), by_dense.last_iterations());
+  }
+  EXPECT_EQ(by_operator.factorizations(), 1); // the second matrix ran on the first's factors
+  EXPECT_GT(by_operator.last_iterations(), 0);
+}
+
+TEST(ReusedLuSolver, SymmetricBlockIsReadByItsLowerTriangle) {
+  const int m = 90, n = 130;
+  Eigen::MatrixXd S = test_matrix(m, 12);
+  S = -(S + S.transpose()).eval();
+  const CondensedNewtonMatrix full = condensed(S, n, 13, 1.0);
+  Eigen::MatrixXd dense_full, dense_lower;
+  full.to_dense(dense_full);
+  // The same P: copy it over.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < full.sparse_part().outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(full.sparse_part(), c); it; ++it)
+      entries.emplace_back(it.row(), it.col(), it.value());
+  CondensedNewtonMatrix by_lower(S, n, true);
+  by_lower.set_sparse_part(entries);
+  by_lower.to_dense(dense_lower);
+  EXPECT_EQ((dense_lower - dense_full).norm(), 0.0);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  EXPECT_LE((by_lower * x - dense_full * x).norm(), 1e-13 * (dense_full * x).norm());
+  // Only the lower triangle is read: an upper triangle of garbage changes nothing.
+  Eigen::MatrixXd S_upper_garbage = S;
+  S_upper_garbage.triangularView<Eigen::StrictlyUpper>().setConstant(1e30);
+  CondensedNewtonMatrix garbage(S_upper_garbage, n, true);
+  garbage.set_sparse_part(entries);
+  EXPECT_LE((garbage * x - dense_full * x).norm(), 1e-13 * (dense_full * x).norm());
+}
+
+TEST(ReusedLuSolver, OperatorFormStopsAtTheForcingTerm) {
+  const int m = 100, n = 150;
+  const Eigen::MatrixXd S = -test_matrix(m, 8);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const CondensedNewtonMatrix J0 = condensed(S, n, 9, 1.0);
+  // Every row of P changed: beyond the cheap iterations, within GMRES' maximum.
+  const CondensedNewtonMatrix J1 = condensed(S, n, 10, 3.0);
+  Eigen::MatrixXd dense1;
+  J1.to_dense(dense1);
+  int tight_iterations = 0;
+  for (double eta : {1e-11, 1e-3}) {
+    ReusedLuSolver solver;
+    solver.solve(J0, b, 1e-11);
+    const Eigen::VectorXd x = solver.solve(J1, b, eta);
+    const double residual = relative_residual(dense1, x, b);
+    std::printf("eta %.0e: %d GMRES iterations, residual %.1e\n", eta, solver.last_iterations(),
+                residual);
+    EXPECT_EQ(solver.factorizations(), 1) << eta;
+    EXPECT_LE(residual, eta) << eta;
+    if (eta == 1e-11) {
+      tight_iterations = solver.last_iterations();
+      EXPECT_GT(tight_iterations, ReusedLuSolver::cheap_iterations);
+    } else {
+      // Stopped early: fewer iterations than the tight solve, and a residual above its.
+      EXPECT_LT(solver.last_iterations(), tight_iterations);
+      EXPECT_GT(residual, 1e-11);
+    }
+  }
+}
+
+TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
+  const int m = 120, n = 180;
+  const Eigen::MatrixXd S = -test_matrix(m, 5);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -2.0, 1.0);
+  const CondensedNewtonMatrix J0 = condensed(S, n, 6, 1.0), J1 = condensed(S, n, 7, 3.0);
+  ReusedLuSolver single, twice;
+  single.set_single_precision_factors(true);
+  for (const auto* J : {&J0, &J1}) {
+    Eigen::MatrixXd dense;
+    J->to_dense(dense);
+    const Eigen::VectorXd exact = dense.partialPivLu().solve(b);
+    const Eigen::VectorXd xs = single.solve(*J, b, 1e-11), xd = twice.solve(*J, b, 1e-11);
+    std::printf("single factors: %d GMRES iterations (double %d), residual %.1e\n",
+                single.last_iterations(), twice.last_iterations(), relative_residual(dense, xs, b));
+    EXPECT_LT(relative_residual(dense, xs, b), 1e-11);
+    EXPECT_LE((xs - exact).norm(), 1e-10 * exact.norm());
+    // A fresh factorisation in float is not a solution by itself: GMRES refines it.
+    if (J == &J0) EXPECT_GT(single.last_iterations(), 0);
+  }
+  EXPECT_EQ(single.factorizations(), 1);
+  // Beyond what float factors can precondition (condition number ~1e12): double takes over.
+  Eigen::MatrixXd hard = test_matrix(60, 11);
+  hard.row(3) = hard.row(4) + 1e-12 * hard.row(3);
+  const Eigen::VectorXd c = Eigen::VectorXd::Ones(60);
+  ReusedLuSolver fallback;
+  fallback.set_single_precision_factors(true);
+  const Eigen::VectorXd x = fallback.solve(hard, c, 1e-11);
+  const Eigen::VectorXd exact = hard.partialPivLu().solve(c);
+  std::printf("ill-conditioned: %d factorisations, |x - exact| / |exact| = %.1e\n",
+              fallback.factorizations(), (x - exact).norm() / exact.norm());
+  EXPECT_EQ(fallback.factorizations(), 2);
+  EXPECT_LE((x - exact).norm(), 1e-3 * exact.norm());
+}
+
 } // namespace
 } // namespace bipot

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,8 @@ TEST(SchurComplementSolver, IsTheCoarseChainAndExpandsToTheExactSolution) {
 
   DistributedVector b(dist), x(dist);
   chain.assemble_rhs(b);
+  // The one-way tie makes S unsymmetric by the tie stiffness: not taken for symmetric.
+  EXPECT_FALSE(solver.symmetric()) << solver.asymmetry();
   const Eigen::VectorXd c = solver.reduce(b);
   ASSERT_EQ(c.size(), 4);
   const Eigen::VectorXd x_kept = solver.schur().partialPivLu().solve(c);
@@ -71,6 +74,40 @@ TEST(SchurComplementSolver, IsTheCoarseChainAndExpandsToTheExactSolution) {
   const Eigen::VectorXd x2 = solver.schur().partialPivLu().solve(solver.reduce(b));
   solver.expand(x2, x);
   EXPECT_LT(test::relative_error(x, [&](Index d) { return 0.5 * chain.exact(d); }), 1e-12);
+}
+
+// A symmetric A (a two-way tie) gives S symmetric to round-off, which the Newton matrix then
+// reads by its lower triangle.
+TEST(SchurComplementSolver, SymmetricMatrixGivesASymmetricComplement) {
+  Chain chain;
+  chain.one_way_tie = false;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  chain.assemble(A);
+  SchurComplementSolver solver;
+  solver.factorize(A, {50, chain.tie_a, chain.tie_b(), 20});
+  std::printf("asymmetry of S: %.1e\n", solver.asymmetry());
+  EXPECT_LE(solver.asymmetry(), SchurComplementSolver::symmetric_within);
+  EXPECT_TRUE(solver.symmetric());
+  const Eigen::MatrixXd& S = solver.schur();
+  EXPECT_LE((S - S.transpose()).norm(), 1e-13 * S.norm());
+
+  // The same with an LDLᵀ factorisation from the lower triangle: S (all of it, mirrored)
+  // and the expanded solution as exact as with the LU.
+  SchurComplementSolver ldlt;
+  ldlt.factorize(A, {50, chain.tie_a, chain.tie_b(), 20}, true);
+  std::printf("LDL^T: |S - S_LU| / |S_LU| = %.1e\n", (ldlt.schur() - S).norm() / S.norm());
+  EXPECT_LE((ldlt.schur() - S).norm(), 1e-12 * S.norm());
+  EXPECT_EQ((ldlt.schur() - ldlt.schur().transpose()).norm(), 0.0);
+  DistributedVector b(dist), x(dist);
+  chain.assemble_rhs(b);
+  const Eigen::VectorXd x_kept = ldlt.schur().partialPivLu().solve(ldlt.reduce(b));
+  ldlt.expand(x_kept, x);
+  DistributedVector x_lu(dist);
+  solver.expand(solver.schur().partialPivLu().solve(solver.reduce(b)), x_lu);
+  x_lu.axpy(-1.0, x);
+  std::printf("LDL^T: |x - x_LU| / |x_LU| = %.1e\n", x_lu.norm2() / x.norm2());
+  EXPECT_LE(x_lu.norm2(), 1e-12 * x.norm2());
 }
 
 TEST(SchurComplementSolver, FailsOnEveryRankWhenTheRestIsSingular) {
