@@ -218,7 +218,9 @@ TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
     EXPECT_LT(relative_residual(dense, xs, b), 1e-11);
     EXPECT_LE((xs - exact).norm(), 1e-10 * exact.norm());
     // A fresh factorisation in float is not a solution by itself: GMRES refines it.
-    if (J == &J0) EXPECT_GT(single.last_iterations(), 0);
+    if (J == &J0) {
+      EXPECT_GT(single.last_iterations(), 0);
+    }
   }
   EXPECT_EQ(single.factorizations(), 1);
   // Beyond what float factors can precondition (condition number ~1e12): double takes over.
