@@ -10,6 +10,7 @@
 #include "fem/assembly/condensed_interface_system.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/interface_enforcement.hpp"
+#include "fem/assembly/linear_bulk_residual.hpp"
 #include "fem/assembly/load_assembler.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
@@ -147,6 +148,9 @@ struct StaticAnalysis::Impl {
   // the bulk tangent or the constrained DOFs change.
   std::unique_ptr<CondensedInterfaceSystem> newton_system;
   SchurComplementSolver schur;
+  /// generalized_newton with a linear bulk and no rigid bodies: the bulk residual of each
+  /// increment from products with the factorised K (assembled with it) instead of a cell loop.
+  LinearBulkResidual bulk_product{dist};
   ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
   bool schur_ready = false;
   std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
