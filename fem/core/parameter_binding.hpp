@@ -69,7 +69,9 @@ template <class T> struct IsOptional : std::false_type {};
 template <class T> struct IsOptional<std::optional<T>> : std::true_type { using value_type = T; };
 } // namespace detail
 
-/// The schema of the parameters struct P: every key bound to its member.
+/// The schema of the parameters struct P: every key bound to its member. The base's untyped
+/// real()/integer()/... are hidden, so a key cannot be declared without its member. Declare
+/// every key on one object: a copy shares the bindings of the schema it was copied from.
 template <class P> class ParamSchemaOf : public ParamSchema {
 public:
   ParamSchemaOf(std::string name, std::string doc)
@@ -87,6 +89,7 @@ public:
   ParamSpec& integer(const std::string& key, T C::*member, const std::string& doc) {
     return bind<ParamType::Integer>(ParamSchema::integer(key, doc), member);
   }
+  /// A boolean key bound to a bool member.
   template <class T, class C>
   ParamSpec& boolean(const std::string& key, T C::*member, const std::string& doc) {
     return bind<ParamType::Boolean>(ParamSchema::boolean(key, doc), member);
