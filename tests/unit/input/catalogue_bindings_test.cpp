@@ -2,6 +2,7 @@
 // from each key's type and range, never by naming keys, so a new key or schema is covered
 // without editing this file (a new material or law must only be added to the lists below,
 // which are compared with the registries).
+#include "apps/pile_pullout/pile_input.hpp"
 #include "contact/laws/coulomb_signorini.hpp"
 #include "contact/laws/interface_law_registry.hpp"
 #include "contact/laws/perfect_bonding.hpp"
@@ -189,6 +190,19 @@ TEST(CatalogueBindings, SolverOptions) {
   EXPECT_EQ(names, as_set(contact::contact_solvers().names()));
   expect_every_key_bound(LinearSolver::schema());
   expect_struct_defaults_match(LinearSolver::schema());
+}
+
+// The pile app's own sections, built only from its reader.
+TEST(CatalogueBindings, PileSections) {
+  const auto check = [](const auto& schema) {
+    expect_every_key_bound(schema);
+    expect_struct_defaults_match(schema);
+  };
+  check(pile::geometry_schema());
+  check(pile::mesh_schema());
+  check(pile::geostatic_schema());
+  check(pile::installation_schema());
+  check(pile::pullout_schema());
 }
 
 } // namespace
