@@ -19,6 +19,7 @@
 
 #include "fem/core/parameter_binding.hpp"
 #include "materials/elasto_plastic.hpp"
+#include "materials/mohr_coulomb.hpp"
 
 namespace bipot {
 
@@ -30,13 +31,7 @@ public:
   /// Cone constants {η, ξ} of angle `angle_deg` for a match; η̄ is η of ψ.
   static std::pair<double, double> cone_constants(double angle_deg, Match match);
 
-  /// Angles in degrees.
-  struct Parameters {
-    double youngs_modulus = 0;        ///< E (kPa)
-    double poissons_ratio = 0;        ///< ν
-    double cohesion = 0;              ///< c (kPa)
-    double friction_angle = 0;        ///< φ
-    double dilatancy_angle = 0;       ///< ψ
+  struct Parameters : FrictionalParameters {
     Match match = Match::Compression; ///< which Mohr–Coulomb condition the cone reproduces
     double unit_weight = 0;           ///< γ (kN/m³)
   };

@@ -28,6 +28,16 @@ std::optional<std::string> no_strength_problem(const std::string& model, double 
                                                double friction_angle);
 } // namespace detail
 
+/// The elastic constants and strength shared by mohr_coulomb and drucker_prager: the first
+/// members of their Parameters, in the order of their keys. Angles in degrees.
+struct FrictionalParameters {
+  double youngs_modulus = 0;  ///< E (kPa)
+  double poissons_ratio = 0;  ///< ν
+  double cohesion = 0;        ///< c (kPa)
+  double friction_angle = 0;  ///< φ
+  double dilatancy_angle = 0; ///< ψ
+};
+
 /// Adds cohesion (kPa, ≥ 0), friction_angle and dilatancy_angle (degrees, [0, 90)), bound to
 /// P's members of those names, with the rules ψ ≤ φ and c > 0 when φ = 0; shared with
 /// drucker_prager. The schema's name names the material in messages.
@@ -64,13 +74,7 @@ public:
     TensionApex       ///< σ1 = σ2 = σ3 = σt
   };
 
-  /// Angles in degrees.
-  struct Parameters {
-    double youngs_modulus = 0;                           ///< E (kPa)
-    double poissons_ratio = 0;                           ///< ν
-    double cohesion = 0;                                 ///< c (kPa)
-    double friction_angle = 0;                           ///< φ
-    double dilatancy_angle = 0;                          ///< ψ
+  struct Parameters : FrictionalParameters {
     std::optional<double> tension_cutoff = std::nullopt; ///< σ_t (kPa); empty = none
     double unit_weight = 0;                              ///< γ (kN/m³)
   };

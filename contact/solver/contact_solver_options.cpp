@@ -34,6 +34,17 @@ void common_keys(ParamSchemaOf<Options>& s, double default_factor) {
       .with_default(true);
 }
 
+// max_iterations, and max_outer_iterations for the solvers with a multiplier loop
+// (`outer_doc` non-empty): their meaning and defaults differ by solver.
+void iteration_keys(ParamSchemaOf<Options>& s, const std::string& doc, long max,
+                    const std::string& outer_doc = "", long max_outer = 0) {
+  s.integer("max_iterations", &Options::max_iterations, doc).at_least(1).with_default(max);
+  if (outer_doc.empty()) return;
+  s.integer("max_outer_iterations", &Options::max_outer_iterations, outer_doc)
+      .at_least(1)
+      .with_default(max_outer);
+}
+
 // The registry's factory: the options of solver `schema.name()` from its validated keys; a
 // key the solver does not have (max_outer_iterations of generalized_newton) keeps the
 // struct's value.
@@ -56,16 +67,8 @@ std::vector<ParamSchemaOf<ContactSolverOptions>> contact_solver_schemas() {
   // 274 / 235 solves. At 100 the sliding-block test needs a cut-back and the Hertz test's
   // hold stage fails, so 30 keeps the gain without the harsher stick/slip switches.
   common_keys(newton, 30.0);
-  newton
-      .integer("max_iterations", &Options::max_iterations,
-               "Newton iterations between multiplier updates")
-      .at_least(1)
-      .with_default(50L);
-  newton
-      .integer("max_outer_iterations", &Options::max_outer_iterations,
-               "multiplier updates per increment")
-      .at_least(1)
-      .with_default(200L);
+  iteration_keys(newton, "Newton iterations between multiplier updates", 50,
+                 "multiplier updates per increment", 200);
   ParamSchemaOf<Options> uzawa(
       "bipotential_uzawa", "the seed's Uzawa predictor-corrector on the bipotential projection, "
                            "alternated with equilibrium solves at fixed multipliers");
@@ -75,16 +78,8 @@ std::vector<ParamSchemaOf<ContactSolverOptions>> contact_solver_schemas() {
   // increment predictor). Same default as semismooth_newton so that both reach the same
   // solution by default.
   common_keys(uzawa, 30.0);
-  uzawa
-      .integer("max_iterations", &Options::max_iterations,
-               "Newton iterations per equilibrium solve")
-      .at_least(1)
-      .with_default(100L);
-  uzawa
-      .integer("max_outer_iterations", &Options::max_outer_iterations,
-               "Uzawa multiplier updates per increment")
-      .at_least(1)
-      .with_default(2000L);
+  iteration_keys(uzawa, "Newton iterations per equilibrium solve", 100,
+                 "Uzawa multiplier updates per increment", 2000);
   ParamSchemaOf<Options> exact(
       "generalized_newton",
       "exact generalized Newton (Alart-Curnier): displacements and interface "
@@ -93,9 +88,7 @@ std::vector<ParamSchemaOf<ContactSolverOptions>> contact_solver_schemas() {
   // rho only weighs the jump against the force inside the projection (which pairs are
   // stuck, sliding or open at the next iterate); it no longer sets a convergence rate.
   common_keys(exact, 1.0);
-  exact.integer("max_iterations", &Options::max_iterations, "Newton iterations per increment")
-      .at_least(1)
-      .with_default(50L);
+  iteration_keys(exact, "Newton iterations per increment", 50);
   return {newton, uzawa, exact};
 }
 
