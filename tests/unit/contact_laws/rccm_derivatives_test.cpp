@@ -76,7 +76,9 @@ TEST(RccmDerivatives, AdhesiveTraction) {
 }
 
 // evaluate() with adhesion being lost (viscous, so β, μ̄, τ and r all move with the jump) in
-// each branch of the projection, 2D and 3D.
+// each branch of the projection, 2D and 3D. The slip cases slide against their friction force
+// (r_t opposite to Δg_t), as a solution does, where evaluate()'s slip element is the exact
+// derivative (slip_linearisation_test.cpp covers the other side).
 TEST(RccmDerivatives, EvaluateChainRuleInEachBranch) {
   const Rccm law({1.0, 1.0, 0.02, 0.6, 0.5}); // nondimensional: tractions, jumps O(0.1..1)
   struct Case {
@@ -84,10 +86,11 @@ TEST(RccmDerivatives, EvaluateChainRuleInEachBranch) {
     ContactStatus status;
   };
   const std::vector<Case> cases = {
-      {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({1.0, 0.3}), ContactStatus::Slip},
+      {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({1.0, -0.3}), ContactStatus::Slip},
       {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({2.0, 0.05}), ContactStatus::Stick},
       {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({0.05, 0.0}), ContactStatus::Open},
-      {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({1.0, 0.3, 0.0}), ContactStatus::Slip},
+      {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({1.0, -0.3, -0.09}),
+       ContactStatus::Slip},
       {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({2.0, 0.05, 0.0}), ContactStatus::Stick},
       {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({0.05, 0.0, 0.0}), ContactStatus::Open}};
   const double h = 1e-7; // on O(0.1) jumps and O(1) tractions

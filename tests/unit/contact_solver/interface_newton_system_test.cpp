@@ -1,6 +1,8 @@
 // The exact generalized Newton's Jacobian (InterfaceNewtonSystem::add) against central
 // finite differences of its residual, in every regime of the interface law: stick, slip,
-// open, debonding (β = β(jump), α = 0 and viscous), debonding while sliding, β frozen.
+// open, debonding (β = β(jump), α = 0 and viscous), debonding while sliding, β frozen. The
+// sliding cases slide against their friction force (r_t opposite to g_t), as a solution does:
+// there the slip branch's element (contact/laws/interface_law.cpp) is the exact derivative.
 #include "contact/laws/coulomb_signorini.hpp"
 #include "contact/laws/rccm.hpp"
 #include "contact/solver/interface_newton_system.hpp"
@@ -49,11 +51,11 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
   auto viscous = std::make_shared<Rccm>(Rccm::Parameters{100.0, 100.0, 0.5, 0.4, 0.2});
   const std::vector<Case> cases = {
       {"stick", coulomb, {-0.01, 0.001}, {10.0, 1.0}, 0.1, ContactStatus::Stick},
-      {"slip", coulomb, {-0.01, 0.02}, {10.0, 8.0}, 0.1, ContactStatus::Slip},
+      {"slip", coulomb, {-0.01, 0.02}, {10.0, -8.0}, 0.1, ContactStatus::Slip},
       {"open", coulomb, {0.02, 0.01}, {-5.0, 0.5}, 0.1, ContactStatus::Open},
       {"rccm_bonded_open", rccm, {0.02, 0.01}, {0.0, 0.0}, 0.1, ContactStatus::Open},
       {"rccm_debonding_open", rccm, {0.1, 0.05}, {0.0, 0.0}, 0.1, ContactStatus::Open, -1, true},
-      {"rccm_debonding_slip", rccm, {-0.01, 0.1}, {10.0, 5.0}, 0.1, ContactStatus::Slip, -1, true},
+      {"rccm_debonding_slip", rccm, {-0.01, 0.1}, {10.0, -5.0}, 0.1, ContactStatus::Slip, -1, true},
       {"rccm_viscous_debonding",
        viscous,
        {0.1, 0.05},
@@ -62,7 +64,7 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
        ContactStatus::Open,
        -1,
        true},
-      {"rccm_beta_frozen_slip", rccm, {-0.01, 0.1}, {10.0, 5.0}, 0.1, ContactStatus::Slip, 0.6},
+      {"rccm_beta_frozen_slip", rccm, {-0.01, 0.1}, {10.0, -5.0}, 0.1, ContactStatus::Slip, 0.6},
   };
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
