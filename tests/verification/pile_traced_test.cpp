@@ -30,7 +30,7 @@ struct Point {
 
 // Pull-out steps by head displacement (rounded to 1e-9 mm, well below the step sizes).
 std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& control) {
-  spec.pullout.set("control", control);
+  spec.pullout.control = control;
   // Both runs to 1e-10 rather than the shipped 1e-8: at viscosity 0, β's history carries the
   // solver's tolerance from step to step (two solves of the same increments that differ
   // only within 1e-8 end 2.4e-6 apart in force at 6 mm), so 1e-6 agreement needs a tighter

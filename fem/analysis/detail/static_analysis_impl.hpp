@@ -181,9 +181,8 @@ struct StaticAnalysis::Impl {
         solid(m.mesh, m.kinematics, dofs, m.material_of_region,
               analysis_detail::indices_of(cell_owned)),
         loads(m.mesh, m.kinematics, dofs, cell_owned), R(dist), du(dist), F_prev(dist), F_cur(dist),
-        F_step(dist), reaction(dist),
-        solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)), u(dofs.num_dofs(), 0.0),
-        linear(analysis_detail::all_linear(m)) {
+        F_step(dist), reaction(dist), solver(LinearSolver::schema().fill(m.spec.linear_solver)),
+        u(dofs.num_dofs(), 0.0), linear(analysis_detail::all_linear(m)) {
     if (m.interface_module) {
       EnforcedInterfaces enforced = m.interface_module->enforce(m, dofs, dist);
       interfaces = std::move(enforced.interfaces);

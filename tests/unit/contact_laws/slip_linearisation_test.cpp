@@ -28,8 +28,9 @@ struct Case {
 };
 
 TEST(SlipLinearisation, AlongTheSlipTheProjectionImplies) {
-  auto coulomb = std::make_shared<CoulombSignorini>(0.4);
-  auto viscous = std::make_shared<Rccm>(1.0, 1.0, 0.02, 0.6, 0.5); // β, hence μ̄, moves
+  auto coulomb = std::make_shared<CoulombSignorini>(CoulombSignorini::Parameters{0.4});
+  auto viscous =
+      std::make_shared<Rccm>(Rccm::Parameters{1.0, 1.0, 0.02, 0.6, 0.5}); // β, hence μ̄, moves
   // Δg_t = jump_t − old_t and r_t point the same way: the iterate slides with its force.
   const std::vector<Case> cases = {
       {0.0, coulomb, vec({0.0, 0.0}), vec({-0.05, 0.1}), vec({1.0, 0.8})},

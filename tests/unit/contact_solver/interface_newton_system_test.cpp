@@ -45,10 +45,10 @@ struct Case {
 };
 
 TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
-  auto coulomb = std::make_shared<CoulombSignorini>(0.4);
+  auto coulomb = std::make_shared<CoulombSignorini>(CoulombSignorini::Parameters{0.4});
   // C = 100 kN/m³, w = 0.5 kJ/m²: the bond breaks at E = C‖g‖² > w.
-  auto rccm = std::make_shared<Rccm>(100.0, 100.0, 0.5, 0.4);
-  auto viscous = std::make_shared<Rccm>(100.0, 100.0, 0.5, 0.4, 0.2);
+  auto rccm = std::make_shared<Rccm>(Rccm::Parameters{100.0, 100.0, 0.5, 0.4});
+  auto viscous = std::make_shared<Rccm>(Rccm::Parameters{100.0, 100.0, 0.5, 0.4, 0.2});
   const std::vector<Case> cases = {
       {"stick", coulomb, {-0.01, 0.001}, {10.0, 1.0}, 0.1, ContactStatus::Stick},
       {"slip", coulomb, {-0.01, 0.02}, {10.0, -8.0}, 0.1, ContactStatus::Slip},
@@ -128,7 +128,7 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
 // In stick the multiplier rows enforce the jump exactly: ∂F_λ/∂λ = 0 and ∂F_λ/∂x = A ρ ∂ĝ/∂x
 // (no penalty left); in separation λ = 0 is imposed (∂F_λ/∂λ = I, ∂F_λ/∂x = 0).
 TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
-  CoulombSignorini law(0.4);
+  CoulombSignorini law({0.4});
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
   const Interface iface = one_pair();
@@ -161,7 +161,7 @@ TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
 // would be zero. Each row then also fixes its own component: J is regular, and the rest of
 // the rows are those of the stick law.
 TEST(InterfaceNewtonSystem, StuckPairOnPrescribedDofsKeepsTheMatrixRegular) {
-  CoulombSignorini law(0.4);
+  CoulombSignorini law({0.4});
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
   const Interface iface = one_pair();
