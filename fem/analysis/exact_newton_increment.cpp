@@ -28,8 +28,9 @@ double law_residual(const CondensedInterfaceSystem& sys, const std::vector<bool>
 } // namespace
 
 bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
-                                                 PathStep* path) {
+                                                 PathStep* path, int max_iterations) {
   const NonlinearSolverOptions& copt = model.contact_solver;
+  const int iteration_limit = max_iterations > 0 ? max_iterations : copt.max_iterations;
   const CondensedInterfaceSystem& sys = *newton_system;
   const Index nI = sys.num_dofs(), n = sys.size();
   F_step.copy(F_prev);
@@ -216,7 +217,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
         log.failure = "the interface residual is not finite";
         return false;
       }
-      if (it >= copt.max_iterations) {
+      if (it >= iteration_limit) {
         log.failure = "no convergence in " + std::to_string(it) + " generalized Newton iterations";
         return false;
       }

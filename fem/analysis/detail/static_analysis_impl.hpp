@@ -285,10 +285,13 @@ struct StaticAnalysis::Impl {
   }
 
   /// With `path`, `lambda` is the load factor at the increment's start and Δλ is solved for.
+  /// `max_iterations` > 0 gives up after that many Newton iterations rather than the contact
+  /// solver's own limit.
   bool solve_increment_exact(double lambda, double dtau, IncrementLog& log,
-                             PathStep* path = nullptr);
+                             PathStep* path = nullptr, int max_iterations = 0);
   ReusedLuSolver path_matrix; ///< the bordered Newton matrices of path-following steps
-  bool solve_increment(double lambda, double dtau, IncrementLog& log);
+  /// `exact_iterations`: solve_increment_exact's `max_iterations` (generalized_newton only).
+  bool solve_increment(double lambda, double dtau, IncrementLog& log, int exact_iterations = 0);
   static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
   // Predictor of the next increment: its size over the last converged one's in this stage
   // (0 at a stage's first increment); u and the multipliers start at committed + this ×
