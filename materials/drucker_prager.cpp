@@ -22,12 +22,6 @@ Invariants invariants(const Mat3& stress) {
   v.j = std::sqrt(0.5 * v.s.cwiseProduct(v.s).sum());
   return v;
 }
-
-DruckerPrager::Match parse_match(const std::string& m) {
-  if (m == "extension") return DruckerPrager::Match::Extension;
-  if (m == "plane_strain") return DruckerPrager::Match::PlaneStrain;
-  return DruckerPrager::Match::Compression;
-}
 } // namespace
 
 std::pair<double, double> DruckerPrager::cone_constants(double angle_deg, Match match) {
@@ -45,30 +39,27 @@ std::pair<double, double> DruckerPrager::cone_constants(double angle_deg, Match 
   return {0.0, 0.0};
 }
 
-ParamSchema DruckerPrager::schema() {
-  ParamSchema s("drucker_prager",
-                "Drucker-Prager plasticity (non-associated, perfectly plastic), the cone "
-                "matched to Mohr-Coulomb");
+ParamSchemaOf<DruckerPrager::Parameters> DruckerPrager::schema() {
+  ParamSchemaOf<Parameters> s("drucker_prager",
+                              "Drucker-Prager plasticity (non-associated, perfectly plastic), "
+                              "the cone matched to Mohr-Coulomb");
   add_hooke_keys(s);
-  add_friction_keys(s, "drucker_prager");
-  s.string("match", "which Mohr-Coulomb condition the cone reproduces: its compression "
-                    "meridian (outer cone), extension meridian (inner cone) or plane-strain "
-                    "strength")
-      .one_of({"compression", "extension", "plane_strain"})
+  add_friction_keys(s);
+  s.choice("match", &Parameters::match,
+           {{"compression", Match::Compression},
+            {"extension", Match::Extension},
+            {"plane_strain", Match::PlaneStrain}},
+           "which Mohr-Coulomb condition the cone reproduces: its compression meridian (outer "
+           "cone), extension meridian (inner cone) or plane-strain strength")
       .with_default(std::string("compression"));
   add_unit_weight_key(s);
   return s;
 }
 
-DruckerPrager::DruckerPrager(const ParameterSet& p)
-    : DruckerPrager(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("cohesion"),
-                    p.real("friction_angle"), p.real("dilatancy_angle"),
-                    parse_match(p.string("match")), p.real("unit_weight")) {}
-
-DruckerPrager::DruckerPrager(double youngs_modulus, double poissons_ratio, double cohesion,
-                             double friction_angle, double dilatancy_angle, Match match,
-                             double unit_weight)
-    : ElastoPlastic(youngs_modulus, poissons_ratio, unit_weight), cohesion_(cohesion) {
+DruckerPrager::DruckerPrager(Checked<Parameters> p)
+    : ElastoPlastic(p->youngs_modulus, p->poissons_ratio, p->unit_weight), cohesion_(p->cohesion) {
+  const Match match = p->match;
+  const double friction_angle = p->friction_angle, dilatancy_angle = p->dilatancy_angle;
   std::tie(eta_, xi_) = cone_constants(friction_angle, match);
   eta_bar_ = cone_constants(dilatancy_angle, match).first;
 }

@@ -17,8 +17,9 @@
 /// References: de Saxcé & Bousshine (1998), Int. J. Mech. Sci. 40, 387–398 (bipotential for
 /// non-associated soils); de Souza Neto, Perić & Owen (2008), §8.3 (Box 8.9).
 
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 #include "materials/elasto_plastic.hpp"
+#include "materials/mohr_coulomb.hpp"
 
 namespace bipot {
 
@@ -30,13 +31,14 @@ public:
   /// Cone constants {η, ξ} of angle `angle_deg` for a match; η̄ is η of ψ.
   static std::pair<double, double> cone_constants(double angle_deg, Match match);
 
-  /// Keys: youngs_modulus, poissons_ratio, cohesion, friction_angle, dilatancy_angle,
-  /// match (compression | extension | plane_strain), unit_weight.
-  static ParamSchema schema();
-  explicit DruckerPrager(const ParameterSet& params);
-  DruckerPrager(double youngs_modulus, double poissons_ratio, double cohesion,
-                double friction_angle, double dilatancy_angle, Match match = Match::Compression,
-                double unit_weight = 0.0);
+  struct Parameters : FrictionalParameters {
+    Match match = Match::Compression; ///< which Mohr–Coulomb condition the cone reproduces
+    double unit_weight = 0;           ///< γ (kN/m³)
+  };
+  static ParamSchemaOf<Parameters> schema();
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit DruckerPrager(const Parameters& p) : DruckerPrager(schema().checked(p)) {}
+  explicit DruckerPrager(Checked<Parameters> p);
 
   std::string name() const override { return "drucker_prager"; }
   Return return_stress(const Mat3& trial, double kappa) const override;

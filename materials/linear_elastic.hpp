@@ -5,7 +5,7 @@
 /// serves both kinematics (plane strain simply has ε_zz = 0).
 
 #include "fem/core/material.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 namespace bipot {
 
@@ -13,19 +13,34 @@ namespace bipot {
 /// normal block, 2G added on its diagonal, G on the shear diagonal.
 VoigtMatrix isotropic_elasticity(double youngs_modulus, double poissons_ratio, int voigt_size);
 
-/// Adds youngs_modulus (kPa, > 0) and poissons_ratio ((-1, 0.5)): shared by every isotropic
-/// material's schema so the keys read the same everywhere.
-void add_hooke_keys(ParamSchema& schema);
-/// Adds unit_weight (kN/m³, ≥ 0, default 0).
-void add_unit_weight_key(ParamSchema& schema);
+/// Adds youngs_modulus (kPa, > 0) and poissons_ratio ((-1, 0.5)), bound to P's members of
+/// those names: shared by every isotropic material's schema so the keys read the same
+/// everywhere.
+template <class P> void add_hooke_keys(ParamSchemaOf<P>& s) {
+  s.real("youngs_modulus", &P::youngs_modulus, "kPa", "Young's modulus E").positive();
+  s.real("poissons_ratio", &P::poissons_ratio, "", "Poisson's ratio nu")
+      .greater_than(-1.0)
+      .less_than(0.5);
+}
+/// Adds unit_weight (kN/m³, ≥ 0, default 0), bound to P::unit_weight.
+template <class P> void add_unit_weight_key(ParamSchemaOf<P>& s) {
+  s.real("unit_weight", &P::unit_weight, "kN/m^3", "weight per unit volume, used by gravity loads")
+      .non_negative()
+      .with_default(0.0);
+}
 
 class LinearElastic : public Material {
 public:
-  /// Keys: youngs_modulus (kPa, > 0), poissons_ratio ((-1, 0.5)), unit_weight (kN/m³, ≥ 0).
-  static ParamSchema schema();
+  struct Parameters {
+    double youngs_modulus = 0; ///< E (kPa)
+    double poissons_ratio = 0; ///< ν
+    double unit_weight = 0;    ///< γ (kN/m³)
+  };
+  static ParamSchemaOf<Parameters> schema();
 
-  explicit LinearElastic(const ParameterSet& params);
-  LinearElastic(double youngs_modulus, double poissons_ratio, double unit_weight = 0.0);
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit LinearElastic(const Parameters& p) : LinearElastic(schema().checked(p)) {}
+  explicit LinearElastic(Checked<Parameters> p);
 
   std::string name() const override { return "linear_elastic"; }
   /// Hooke's law on the strain alone: the initial stress does not change the response.

@@ -8,18 +8,12 @@
 
 namespace bipot {
 
-namespace {
-template <class T> void add(Registry<Material>& r) {
-  r.add(T::schema(), [](const ParameterSet& p) { return std::make_unique<T>(p); });
-}
-} // namespace
-
 void register_materials(Registry<Material>& registry) {
-  add<LinearElastic>(registry);
-  add<VonMises>(registry);
-  add<Tresca>(registry);
-  add<MohrCoulomb>(registry);
-  add<DruckerPrager>(registry);
+  registry.add<LinearElastic>();
+  registry.add<VonMises>();
+  registry.add<Tresca>();
+  registry.add<MohrCoulomb>();
+  registry.add<DruckerPrager>();
 }
 
 Registry<Material> builtin_materials() {

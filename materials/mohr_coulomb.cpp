@@ -19,57 +19,41 @@ Vec3 shear_plane(int a, int b, double sin_angle) {
 }
 } // namespace
 
-void add_friction_keys(ParamSchema& s, const std::string& model) {
-  s.real("cohesion", "kPa", "cohesion c").non_negative();
-  s.real("friction_angle", "deg", "friction angle phi")
-      .at_least(0.0)
-      .less_than(90.0)
-      .because("a friction angle of 90 degrees or more has no finite strength in compression");
-  s.real("dilatancy_angle", "deg", "dilatancy angle psi (plastic potential); psi <= phi")
-      .at_least(0.0)
-      .less_than(90.0);
-  s.rule({"dilatancy_angle", "dilatancy_angle <= friction_angle",
-          [](const ParameterSet& p) -> std::optional<std::string> {
-            if (p.real("dilatancy_angle") <= p.real("friction_angle")) return std::nullopt;
-            return "value " + format_value(p.real("dilatancy_angle")) +
-                   " deg exceeds friction_angle " + format_value(p.real("friction_angle")) +
-                   " deg: a dilatancy angle above the friction angle would dissipate "
-                   "negative work";
-          }});
-  s.rule({"cohesion", "cohesion > 0 when friction_angle is 0",
-          [model](const ParameterSet& p) -> std::optional<std::string> {
-            if (p.real("cohesion") > 0 || p.real("friction_angle") > 0) return std::nullopt;
-            return "value 0 with friction_angle 0 leaves the " + model +
-                   " material no strength at all; give cohesion > 0 or friction_angle > 0";
-          }});
+namespace detail {
+std::optional<std::string> dilatancy_problem(double dilatancy_angle, double friction_angle) {
+  if (dilatancy_angle <= friction_angle) return std::nullopt;
+  return "value " + format_value(dilatancy_angle) + " deg exceeds friction_angle " +
+         format_value(friction_angle) +
+         " deg: a dilatancy angle above the friction angle would dissipate negative work";
 }
 
-ParamSchema MohrCoulomb::schema() {
-  ParamSchema s("mohr_coulomb",
-                "Mohr-Coulomb plasticity (non-associated, perfectly plastic) with an optional "
-                "tension cut-off");
+std::optional<std::string> no_strength_problem(const std::string& model, double cohesion,
+                                               double friction_angle) {
+  if (cohesion > 0 || friction_angle > 0) return std::nullopt;
+  return "value 0 with friction_angle 0 leaves the " + model +
+         " material no strength at all; give cohesion > 0 or friction_angle > 0";
+}
+} // namespace detail
+
+ParamSchemaOf<MohrCoulomb::Parameters> MohrCoulomb::schema() {
+  ParamSchemaOf<Parameters> s("mohr_coulomb",
+                              "Mohr-Coulomb plasticity (non-associated, perfectly plastic) with "
+                              "an optional tension cut-off");
   add_hooke_keys(s);
-  add_friction_keys(s, "mohr_coulomb");
-  s.real("tension_cutoff", "kPa",
+  add_friction_keys(s);
+  s.real("tension_cutoff", &Parameters::tension_cutoff, "kPa",
          "tensile strength sigma_t: the major principal stress stays <= sigma_t (absent: no "
          "cut-off)")
-      .non_negative()
-      .optional();
+      .non_negative();
   add_unit_weight_key(s);
   return s;
 }
 
-MohrCoulomb::MohrCoulomb(const ParameterSet& p)
-    : MohrCoulomb(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("cohesion"),
-                  p.real("friction_angle"), p.real("dilatancy_angle"),
-                  p.has("tension_cutoff") ? std::optional<double>(p.real("tension_cutoff"))
-                                          : std::nullopt,
-                  p.real("unit_weight")) {}
-
-MohrCoulomb::MohrCoulomb(double youngs_modulus, double poissons_ratio, double cohesion,
-                         double friction_angle, double dilatancy_angle,
-                         std::optional<double> tension_cutoff, double unit_weight)
-    : MultiSurfacePlastic(youngs_modulus, poissons_ratio, unit_weight) {
+MohrCoulomb::MohrCoulomb(Checked<Parameters> p)
+    : MultiSurfacePlastic(p->youngs_modulus, p->poissons_ratio, p->unit_weight) {
+  const double friction_angle = p->friction_angle, dilatancy_angle = p->dilatancy_angle;
+  const double cohesion = p->cohesion;
+  const std::optional<double> tension_cutoff = p->tension_cutoff;
   const double sphi = std::sin(friction_angle * degree), spsi = std::sin(dilatancy_angle * degree);
   const double k = 2 * cohesion * std::cos(friction_angle * degree);
   // Surfaces 0-2: main plane (σ1, σ3), then (σ2, σ3) and (σ1, σ2); 3-5: cut-off on σ1..σ3.

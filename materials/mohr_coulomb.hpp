@@ -14,17 +14,49 @@
 /// References: de Souza Neto, Perić & Owen (2008), Computational Methods for Plasticity,
 /// §8.2 (Boxes 8.4–8.5); Clausen, Damkilde & Andersen (2006), IJNME 66, 1036–1059.
 
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 #include "materials/multi_surface_plastic.hpp"
 
 #include <optional>
 
 namespace bipot {
 
-/// Adds cohesion (kPa, ≥ 0), friction_angle and dilatancy_angle (degrees, [0, 90)) with the
-/// rules ψ ≤ φ and c > 0 when φ = 0; shared with drucker_prager. `model` names the material
-/// in messages.
-void add_friction_keys(ParamSchema& schema, const std::string& model);
+namespace detail {
+/// The problems of the rules below, if any (the messages `check` prints).
+std::optional<std::string> dilatancy_problem(double dilatancy_angle, double friction_angle);
+std::optional<std::string> no_strength_problem(const std::string& model, double cohesion,
+                                               double friction_angle);
+} // namespace detail
+
+/// The elastic constants and strength shared by mohr_coulomb and drucker_prager: the first
+/// members of their Parameters, in the order of their keys. Angles in degrees.
+struct FrictionalParameters {
+  double youngs_modulus = 0;  ///< E (kPa)
+  double poissons_ratio = 0;  ///< ν
+  double cohesion = 0;        ///< c (kPa)
+  double friction_angle = 0;  ///< φ
+  double dilatancy_angle = 0; ///< ψ
+};
+
+/// Adds cohesion (kPa, ≥ 0), friction_angle and dilatancy_angle (degrees, [0, 90)), bound to
+/// P's members of those names, with the rules ψ ≤ φ and c > 0 when φ = 0; shared with
+/// drucker_prager. The schema's name names the material in messages.
+template <class P> void add_friction_keys(ParamSchemaOf<P>& s) {
+  s.real("cohesion", &P::cohesion, "kPa", "cohesion c").non_negative();
+  s.real("friction_angle", &P::friction_angle, "deg", "friction angle phi")
+      .at_least(0.0)
+      .less_than(90.0)
+      .because("a friction angle of 90 degrees or more has no finite strength in compression");
+  s.real("dilatancy_angle", &P::dilatancy_angle, "deg",
+         "dilatancy angle psi (plastic potential); psi <= phi")
+      .at_least(0.0)
+      .less_than(90.0);
+  s.rule("dilatancy_angle", "dilatancy_angle <= friction_angle",
+         [](const P& p) { return detail::dilatancy_problem(p.dilatancy_angle, p.friction_angle); });
+  s.rule("cohesion", "cohesion > 0 when friction_angle is 0", [model = s.name()](const P& p) {
+    return detail::no_strength_problem(model, p.cohesion, p.friction_angle);
+  });
+}
 
 class MohrCoulomb : public MultiSurfacePlastic {
 public:
@@ -42,14 +74,14 @@ public:
     TensionApex       ///< σ1 = σ2 = σ3 = σt
   };
 
-  /// Keys: youngs_modulus, poissons_ratio, cohesion (kPa), friction_angle,
-  /// dilatancy_angle (degrees), tension_cutoff (kPa, optional), unit_weight.
-  static ParamSchema schema();
-  explicit MohrCoulomb(const ParameterSet& params);
-  /// Angles in degrees; `tension_cutoff` empty = none.
-  MohrCoulomb(double youngs_modulus, double poissons_ratio, double cohesion, double friction_angle,
-              double dilatancy_angle, std::optional<double> tension_cutoff = std::nullopt,
-              double unit_weight = 0.0);
+  struct Parameters : FrictionalParameters {
+    std::optional<double> tension_cutoff = std::nullopt; ///< σ_t (kPa); empty = none
+    double unit_weight = 0;                              ///< γ (kN/m³)
+  };
+  static ParamSchemaOf<Parameters> schema();
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit MohrCoulomb(const Parameters& p) : MohrCoulomb(schema().checked(p)) {}
+  explicit MohrCoulomb(Checked<Parameters> p);
 
   std::string name() const override { return "mohr_coulomb"; }
 };

@@ -6,13 +6,15 @@
 
 namespace bipot {
 
-ParamSchema Tresca::schema() {
-  ParamSchema s("tresca", "Tresca plasticity with linear isotropic hardening of the shear "
-                          "strength");
+ParamSchemaOf<Tresca::Parameters> Tresca::schema() {
+  using P = Parameters;
+  ParamSchemaOf<P> s("tresca", "Tresca plasticity with linear isotropic hardening of the shear "
+                               "strength");
   add_hooke_keys(s);
-  s.real("cohesion", "kPa", "shear strength c (undrained: s_u): sigma_1 - sigma_3 <= 2 c")
+  s.real("cohesion", &P::cohesion, "kPa",
+         "shear strength c (undrained: s_u): sigma_1 - sigma_3 <= 2 c")
       .positive();
-  s.real("hardening_modulus", "kPa",
+  s.real("hardening_modulus", &P::hardening_modulus, "kPa",
          "linear hardening H of the shear strength c + H * gamma_p (plastic shear strain)")
       .non_negative()
       .with_default(0.0);
@@ -20,13 +22,9 @@ ParamSchema Tresca::schema() {
   return s;
 }
 
-Tresca::Tresca(const ParameterSet& p)
-    : Tresca(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("cohesion"),
-             p.real("hardening_modulus"), p.real("unit_weight")) {}
-
-Tresca::Tresca(double youngs_modulus, double poissons_ratio, double cohesion,
-               double hardening_modulus, double unit_weight)
-    : MultiSurfacePlastic(youngs_modulus, poissons_ratio, unit_weight) {
+Tresca::Tresca(Checked<Parameters> p)
+    : MultiSurfacePlastic(p->youngs_modulus, p->poissons_ratio, p->unit_weight) {
+  const double cohesion = p->cohesion, hardening_modulus = p->hardening_modulus;
   std::vector<PrincipalSurface> surfaces;
   for (auto [a, b] : {std::pair{0, 2}, std::pair{1, 2}, std::pair{0, 1}}) {
     const Vec3 n = Vec3::Unit(a) - Vec3::Unit(b);

@@ -9,7 +9,7 @@
 /// return: in simple shear τ = c + H γp.
 /// Reference: de Souza Neto, Perić & Owen (2008), §8.1.
 
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 #include "materials/multi_surface_plastic.hpp"
 
 namespace bipot {
@@ -18,12 +18,17 @@ class Tresca : public MultiSurfacePlastic {
 public:
   enum Branch { Elastic = 0, Plane, EdgeLeft, EdgeRight };
 
-  /// Keys: youngs_modulus, poissons_ratio, cohesion (shear strength c, kPa, > 0),
-  /// hardening_modulus (H, kPa, ≥ 0, default 0), unit_weight.
-  static ParamSchema schema();
-  explicit Tresca(const ParameterSet& params);
-  Tresca(double youngs_modulus, double poissons_ratio, double cohesion,
-         double hardening_modulus = 0.0, double unit_weight = 0.0);
+  struct Parameters {
+    double youngs_modulus = 0;    ///< E (kPa)
+    double poissons_ratio = 0;    ///< ν
+    double cohesion = 0;          ///< shear strength c (kPa)
+    double hardening_modulus = 0; ///< H (kPa)
+    double unit_weight = 0;       ///< γ (kN/m³)
+  };
+  static ParamSchemaOf<Parameters> schema();
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit Tresca(const Parameters& p) : Tresca(schema().checked(p)) {}
+  explicit Tresca(Checked<Parameters> p);
 
   std::string name() const override { return "tresca"; }
 };

@@ -15,11 +15,13 @@ double equivalent_stress(const Mat3& dev) {
 }
 } // namespace
 
-ParamSchema VonMises::schema() {
-  ParamSchema s("von_mises", "von Mises (J2) plasticity with linear isotropic hardening");
+ParamSchemaOf<VonMises::Parameters> VonMises::schema() {
+  using P = Parameters;
+  ParamSchemaOf<P> s("von_mises", "von Mises (J2) plasticity with linear isotropic hardening");
   add_hooke_keys(s);
-  s.real("yield_stress", "kPa", "initial uniaxial yield stress sigma_y").positive();
-  s.real("hardening_modulus", "kPa",
+  s.real("yield_stress", &P::yield_stress, "kPa", "initial uniaxial yield stress sigma_y")
+      .positive();
+  s.real("hardening_modulus", &P::hardening_modulus, "kPa",
          "linear isotropic hardening modulus H: yield stress sigma_y + H * (equivalent plastic "
          "strain)")
       .non_negative()
@@ -28,14 +30,9 @@ ParamSchema VonMises::schema() {
   return s;
 }
 
-VonMises::VonMises(const ParameterSet& p)
-    : VonMises(p.real("youngs_modulus"), p.real("poissons_ratio"), p.real("yield_stress"),
-               p.real("hardening_modulus"), p.real("unit_weight")) {}
-
-VonMises::VonMises(double youngs_modulus, double poissons_ratio, double yield_stress,
-                   double hardening_modulus, double unit_weight)
-    : ElastoPlastic(youngs_modulus, poissons_ratio, unit_weight), yield_stress_(yield_stress),
-      hardening_modulus_(hardening_modulus) {}
+VonMises::VonMises(Checked<Parameters> p)
+    : ElastoPlastic(p->youngs_modulus, p->poissons_ratio, p->unit_weight),
+      yield_stress_(p->yield_stress), hardening_modulus_(p->hardening_modulus) {}
 
 double VonMises::yield_function(const Mat3& stress, double kappa) const {
   return equivalent_stress(deviator(stress)) - (yield_stress_ + hardening_modulus_ * kappa);

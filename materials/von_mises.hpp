@@ -6,7 +6,7 @@
 /// (exact for linear hardening), with the consistent tangent of the discrete map
 /// (Simo & Taylor 1985; Simo & Hughes 1998, Box 3.2; de Souza Neto et al. 2008, §7.3-7.4).
 
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 #include "materials/elasto_plastic.hpp"
 
 namespace bipot {
@@ -15,12 +15,17 @@ class VonMises : public ElastoPlastic {
 public:
   enum Branch { Elastic = 0, Radial = 1 };
 
-  /// Keys: youngs_modulus (kPa), poissons_ratio, yield_stress σ_y (kPa, > 0),
-  /// hardening_modulus H (kPa, ≥ 0, default 0), unit_weight (kN/m³, default 0).
-  static ParamSchema schema();
-  explicit VonMises(const ParameterSet& params);
-  VonMises(double youngs_modulus, double poissons_ratio, double yield_stress,
-           double hardening_modulus = 0.0, double unit_weight = 0.0);
+  struct Parameters {
+    double youngs_modulus = 0;    ///< E (kPa)
+    double poissons_ratio = 0;    ///< ν
+    double yield_stress = 0;      ///< σ_y (kPa)
+    double hardening_modulus = 0; ///< H (kPa)
+    double unit_weight = 0;       ///< γ (kN/m³)
+  };
+  static ParamSchemaOf<Parameters> schema();
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit VonMises(const Parameters& p) : VonMises(schema().checked(p)) {}
+  explicit VonMises(Checked<Parameters> p);
 
   std::string name() const override { return "von_mises"; }
   Return return_stress(const Mat3& trial, double kappa) const override;

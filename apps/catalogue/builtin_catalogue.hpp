@@ -9,8 +9,7 @@ namespace bipot {
 /// A fresh catalogue with every built-in material and interface law. A value: an
 /// application may add its own entries before using it, e.g.
 ///   Catalogue catalogue = builtin_catalogue();
-///   catalogue.interface_laws.add(MyLaw::schema(), [](const ParameterSet& p) {
-///     return std::make_unique<MyLaw>(p); });
+///   catalogue.interface_laws.add<MyLaw>(); // MyLaw::schema(), MyLaw(Checked<Parameters>)
 ///   Model model = build_model(read_problem_file(path, catalogue), catalogue);
 Catalogue builtin_catalogue();
 

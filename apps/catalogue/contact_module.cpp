@@ -60,11 +60,11 @@ void split_interfaces(Model& model, const Registry<contact::InterfaceLaw>& laws,
           std::find_if(model.spec.interfaces.begin(), model.spec.interfaces.end(),
                        [&](const InterfaceSpec& f) { return f.name == change.interface; }) -
           model.spec.interfaces.begin());
-      data.stage_laws.push_back({s, k, laws.create(change.law, change.parameters)});
+      data.stage_laws.push_back({s, k, laws.create_validated(change.law, change.parameters)});
     }
   for (std::size_t k = 0; k < model.spec.interfaces.size(); ++k) {
     const InterfaceSpec& spec = model.spec.interfaces[k];
-    data.laws.push_back(laws.create(spec.law, spec.parameters));
+    data.laws.push_back(laws.create_validated(spec.law, spec.parameters));
     contact::InterfaceDefinition def;
     def.name = spec.name;
     if (spec.between.size() == 2) {
@@ -100,8 +100,8 @@ public:
   void build(Model& model) const override {
     auto data = std::make_shared<ContactData>();
     split_interfaces(model, laws_, *data);
-    data->options = *contact::contact_solvers().create(model.spec.contact_solver.type,
-                                                       model.spec.contact_solver.parameters);
+    data->options = *contact::contact_solvers().create_validated(
+        model.spec.contact_solver.type, model.spec.contact_solver.parameters);
     model.contact_solver = data->options;
     model.interface_data = std::move(data);
   }

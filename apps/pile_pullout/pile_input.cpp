@@ -14,83 +14,103 @@ namespace bipot::pile {
 using input::Diagnostics;
 using input::YamlMap;
 
-ParamSchema geometry_schema() {
-  ParamSchema s("geometry", "pile and soil domain (axisymmetric, ground surface at z = 0)");
-  s.real("pile_diameter", "m", "pile diameter D").positive();
-  s.real("pile_length", "m", "embedded pile length L (head at the ground surface)").positive();
-  s.real("soil_radius", "m", "radius of the soil domain, from the pile axis").positive();
-  s.real("soil_depth", "m", "depth of the soil domain below the surface (> pile_length)")
+ParamSchemaOf<Geometry> geometry_schema() {
+  using G = Geometry;
+  ParamSchemaOf<G> s("geometry", "pile and soil domain (axisymmetric, ground surface at z = 0)");
+  s.real("pile_diameter", &G::pile_diameter, "m", "pile diameter D").positive();
+  s.real("pile_length", &G::pile_length, "m", "embedded pile length L (head at the ground surface)")
+      .positive();
+  s.real("soil_radius", &G::soil_radius, "m", "radius of the soil domain, from the pile axis")
+      .positive();
+  s.real("soil_depth", &G::soil_depth, "m",
+         "depth of the soil domain below the surface (> pile_length)")
       .positive();
   return s;
 }
 
-ParamSchema mesh_schema() {
-  ParamSchema s("mesh", "structured mesh of four blocks: pile, soil beside it, soil below the "
-                        "toe (r < D/2 and r > D/2)");
-  s.string("cell", "element type (the seed used 3-node triangles)")
+ParamSchemaOf<MeshDensity> mesh_schema() {
+  using M = MeshDensity;
+  ParamSchemaOf<M> s("mesh", "structured mesh of four blocks: pile, soil beside it, soil below "
+                             "the toe (r < D/2 and r > D/2)");
+  s.string("cell", &M::cell, "element type (the seed used 3-node triangles)")
       .one_of({"tri3", "tri6", "quad4", "quad8"})
       .with_default(std::string("tri3"));
-  s.integer("pile_radial_cells", "cells across the pile radius").at_least(1).with_default(3L);
-  s.integer("shaft_cells", "cells along the shaft").at_least(2).with_default(52L);
-  s.real("shaft_growth", "",
+  s.integer("pile_radial_cells", &M::pile_radial_cells, "cells across the pile radius")
+      .at_least(1)
+      .with_default(3L);
+  s.integer("shaft_cells", &M::shaft_cells, "cells along the shaft").at_least(2).with_default(52L);
+  s.real("shaft_growth", &M::shaft_growth, "",
          "size ratio of consecutive cells along the shaft going down "
          "(< 1 refines toward the toe)")
       .positive()
       .with_default(1.0);
-  s.integer("soil_radial_cells", "cells from the shaft to soil_radius")
+  s.integer("soil_radial_cells", &M::soil_radial_cells, "cells from the shaft to soil_radius")
       .at_least(1)
       .with_default(30L);
-  s.real("radial_growth", "", "size ratio of consecutive soil cells going away from the shaft")
+  s.real("radial_growth", &M::radial_growth, "",
+         "size ratio of consecutive soil cells going away from the shaft")
       .positive()
       .with_default(1.15);
-  s.integer("below_toe_cells", "cells from the toe to the bottom").at_least(1).with_default(20L);
-  s.real("below_toe_growth", "", "size ratio of consecutive cells going down from the toe")
+  s.integer("below_toe_cells", &M::below_toe_cells, "cells from the toe to the bottom")
+      .at_least(1)
+      .with_default(20L);
+  s.real("below_toe_growth", &M::below_toe_growth, "",
+         "size ratio of consecutive cells going down from the toe")
       .positive()
       .with_default(1.15);
   return s;
 }
 
-ParamSchema geostatic_schema() {
-  ParamSchema s("stages.geostatic", "initial stress sigma_v = gamma z, sigma_h = K0 sigma_v "
-                                    "(soil unit weight from materials.soil), then equilibrium "
-                                    "and a displacement reset keeping stresses and contact forces");
-  s.real("K0", "", "coefficient of earth pressure at rest (normally consolidated: 1 - sin phi')")
+ParamSchemaOf<GeostaticStage> geostatic_schema() {
+  ParamSchemaOf<GeostaticStage> s("stages.geostatic",
+                                  "initial stress sigma_v = gamma z, sigma_h = K0 sigma_v "
+                                  "(soil unit weight from materials.soil), then equilibrium "
+                                  "and a displacement reset keeping stresses and contact forces");
+  s.real("K0", &GeostaticStage::K0, "",
+         "coefficient of earth pressure at rest (normally consolidated: 1 - sin phi')")
       .non_negative();
   return s;
 }
 
-ParamSchema installation_schema() {
-  ParamSchema s("stages.installation", "prescribed radial expansion of the shaft relative to the "
-                                       "soil (an interference), which raises the normal stress");
-  s.real("radial_displacement", "m", "radial displacement of the shaft into the soil")
+ParamSchemaOf<InstallationStage> installation_schema() {
+  using I = InstallationStage;
+  ParamSchemaOf<I> s("stages.installation",
+                     "prescribed radial expansion of the shaft relative to the "
+                     "soil (an interference), which raises the normal stress");
+  s.real("radial_displacement", &I::radial_displacement, "m",
+         "radial displacement of the shaft into the soil")
       .non_negative();
-  s.integer("increments", "load increments of the stage").at_least(1).with_default(4L);
+  s.integer("increments", &I::increments, "load increments of the stage")
+      .at_least(1)
+      .with_default(4L);
   return s;
 }
 
-ParamSchema pullout_schema() {
-  ParamSchema s("stages.pullout", "upward displacement of the pile head, in equal increments or "
-                                  "traced through the snap-back (control)");
-  s.real("head_displacement", "m", "head displacement reached at the end").positive();
-  s.integer("increments", "load increments of the stage").at_least(1);
-  s.real("duration", "s", "pseudo-time of the stage (matters for a viscous RCCM interface only)")
+ParamSchemaOf<PulloutStage> pullout_schema() {
+  using P = PulloutStage;
+  ParamSchemaOf<P> s("stages.pullout", "upward displacement of the pile head, in equal "
+                                       "increments or traced through the snap-back (control)");
+  s.real("head_displacement", &P::head_displacement, "m", "head displacement reached at the end")
+      .positive();
+  s.integer("increments", &P::increments, "load increments of the stage").at_least(1);
+  s.real("duration", &P::duration, "s",
+         "pseudo-time of the stage (matters for a viscous RCCM interface only)")
       .positive()
       .with_default(1.0);
-  s.string("control", "how the head displacement advances: ramp (equal increments), "
-                      "dissipation (ramp, then steps of equal energy released by adhesion loss "
-                      "through the debonding snap-back) or arc_length (steps of equal interface "
-                      "displacement); docs/theory.md")
+  s.string("control", &P::control,
+           "how the head displacement advances: ramp (equal increments), "
+           "dissipation (ramp, then steps of equal energy released by adhesion loss "
+           "through the debonding snap-back) or arc_length (steps of equal interface "
+           "displacement); docs/theory.md")
       .one_of({"ramp", "dissipation", "arc_length"})
       .with_default(std::string("ramp"));
   // Optional without a default value: the analysis derives them (PathControl).
-  s.real("dissipation_step", "kJ",
+  s.real("dissipation_step", &P::dissipation_step, "kJ",
          "energy released by adhesion loss per traced step (control: dissipation); default: "
          "the interfaces' adhesion energy / increments")
-      .positive()
-      .required = false;
-  s.integer("max_increments", "traced steps allowed (default 20 x increments)")
-      .at_least(1)
-      .required = false;
+      .positive();
+  s.integer("max_increments", &P::max_increments, "traced steps allowed (default 20 x increments)")
+      .at_least(1);
   return s;
 }
 
@@ -114,18 +134,31 @@ ParameterSet read_section(const YamlMap& parent, const std::string& key, const P
   return p;
 }
 
+// The section's struct; left default when a required key is missing or invalid (reported
+// already: parse() throws before the struct is used).
+template <class P> P to_struct(const ParamSchemaOf<P>& schema, const ParameterSet& p) {
+  for (const auto& spec : schema.specs())
+    if (spec.required && !p.has(spec.name)) return P{};
+  return *schema.fill(p);
+}
+
+template <class P>
+P read_struct(const YamlMap& parent, const std::string& key, const ParamSchemaOf<P>& schema,
+              bool required, const std::string& doc) {
+  return to_struct(schema, read_section(parent, key, schema, required, doc));
+}
+
 std::string num(double v) {
   std::ostringstream os;
   os << v;
   return os.str();
 }
 
-void check_geometry(const YamlMap& top, PileSpec& spec) {
+void check_geometry(const YamlMap& top, const ParameterSet& g, const std::string& file) {
   // Each check needs both of its values valid (a missing or out-of-range one is reported
-  // already).
-  const auto& g = spec.geometry;
+  // already), so it reads the validated keys rather than the struct.
   const auto ok = [&](const char* a, const char* b) { return g.has(a) && g.has(b); };
-  Diagnostics quiet(spec.file); // the keys were checked by read_section: no second report
+  Diagnostics quiet(file); // the keys were checked by read_section: no second report
   YamlMap geo(top.node("geometry"), "geometry", quiet, geometry_schema().keys());
   const auto error = [&](const char* key, const std::string& msg) {
     top.diag().error_at(geo.where(key), msg);
@@ -190,11 +223,10 @@ void read_stages(const YamlMap& top, PileSpec& spec) {
   }
   YamlMap m(top.node("stages"), "stages", top.diag(), {"geostatic", "installation", "pullout"});
   if (!m.valid()) return;
-  spec.geostatic = read_section(m, "geostatic", geostatic_schema(), true, "K0");
-  spec.installation = read_section(m, "installation", installation_schema(), true,
-                                   "radial_displacement, increments");
-  spec.pullout =
-      read_section(m, "pullout", pullout_schema(), true, "head_displacement, increments");
+  spec.geostatic = read_struct(m, "geostatic", geostatic_schema(), true, "K0");
+  spec.installation = read_struct(m, "installation", installation_schema(), true,
+                                  "radial_displacement, increments");
+  spec.pullout = read_struct(m, "pullout", pullout_schema(), true, "head_displacement, increments");
   spec.geostatic_where = m.where("geostatic");
   spec.installation_where = m.where("installation");
   spec.pullout_where = m.where("pullout");
@@ -230,10 +262,12 @@ PileSpec parse(const std::string& text, const std::string& file_name,
   YamlMap top(root, "", diag, top_keys());
   if (!top.valid()) throw InputError(diag.problems());
   top.string("name", spec.name);
-  spec.geometry = read_section(top, "geometry", geometry_schema(), true,
-                               "pile_diameter, pile_length, soil_radius, soil_depth");
-  if (top.has("geometry")) check_geometry(top, spec);
-  spec.mesh = read_section(top, "mesh", mesh_schema(), false, "");
+  const auto geometry = geometry_schema();
+  const ParameterSet g = read_section(top, "geometry", geometry, true,
+                                      "pile_diameter, pile_length, soil_radius, soil_depth");
+  if (top.has("geometry")) check_geometry(top, g, spec.file);
+  spec.geometry = to_struct(geometry, g);
+  spec.mesh = read_struct(top, "mesh", mesh_schema(), false, "");
   read_materials(top, catalogue.materials, spec);
   top.boolean("rigid_soil", spec.rigid_soil);
   read_interface(top, catalogue.interface_laws, spec);
@@ -275,8 +309,9 @@ std::string describe_pile_input(bool markdown) {
           "  output: {directory, vtk, every, profiles_at: [head displacements, mm],\n"
           "           checkpoint: {after: [stages], steps: [{stage, step}], every: n}}\n"
           "          (stages geostatic, installation, pullout; see `bipot describe input`)\n\n";
-  for (const ParamSchema& s : {geometry_schema(), mesh_schema(), geostatic_schema(),
-                               installation_schema(), pullout_schema()})
+  const std::vector<ParamSchema> schemas = {geometry_schema(), mesh_schema(), geostatic_schema(),
+                                            installation_schema(), pullout_schema()};
+  for (const ParamSchema& s : schemas)
     os << (markdown ? "### `" + s.name() + "`\n\n" + s.doc() + "\n\n" + s.markdown_table() + "\n"
                     : s.describe() + "\n");
   return os.str();

@@ -47,21 +47,20 @@ InitialStressSpec geostatic(const std::string& region, double unit_weight, doubl
 ProblemSpec make_problem(const PileSpec& pile) {
   const auto& g = pile.geometry;
   const auto& m = pile.mesh;
-  const double a = 0.5 * g.real("pile_diameter"), L = g.real("pile_length");
-  const double R = g.real("soil_radius"), H = g.real("soil_depth");
+  const double a = 0.5 * g.pile_diameter, L = g.pile_length;
+  const double R = g.soil_radius, H = g.soil_depth;
 
   ProblemSpec p;
   p.file = pile.file;
   p.kinematics = "axisymmetric";
   p.mesh.has_blocks = true;
-  p.mesh.cell = m.string("cell");
+  p.mesh.cell = m.cell;
   p.mesh.where = pile.file + ": mesh";
   // AxisSegments grade along increasing coordinates; the input's growth factors go away from
   // the shaft and down from the toe / the head.
-  p.mesh.x = axis(0.0, a, R, m.integer("pile_radial_cells"), m.integer("soil_radial_cells"), 1.0,
-                  m.real("radial_growth"));
-  p.mesh.y = axis(-H, -L, 0.0, m.integer("below_toe_cells"), m.integer("shaft_cells"),
-                  1.0 / m.real("below_toe_growth"), 1.0 / m.real("shaft_growth"));
+  p.mesh.x = axis(0.0, a, R, m.pile_radial_cells, m.soil_radial_cells, 1.0, m.radial_growth);
+  p.mesh.y = axis(-H, -L, 0.0, m.below_toe_cells, m.shaft_cells, 1.0 / m.below_toe_growth,
+                  1.0 / m.shaft_growth);
   p.mesh.block_regions = {kSoilToe, kSoil, kPile, kSoil};
   BoxSetSpec head{kHead, {0.0, 0.0}, {a, 0.0}, kPile, pile.pullout_where};
   p.mesh.box_sets.push_back(head);
@@ -79,7 +78,7 @@ ProblemSpec make_problem(const PileSpec& pile) {
   // Geostatic stress: the soil's from its unit weight and K0; the pile gets its own vertical
   // stress (its weight) and the soil's horizontal stress, so that the shaft starts in
   // equilibrium with the soil's K0 gamma z.
-  const double k0 = pile.geostatic.real("K0");
+  const double k0 = pile.geostatic.K0;
   const double gamma_soil =
       pile.soil.parameters.has("unit_weight") ? pile.soil.parameters.real("unit_weight") : 0.0;
   const double gamma_pile =
@@ -126,24 +125,22 @@ ProblemSpec make_problem(const PileSpec& pile) {
   StageSpec install;
   install.name = "installation";
   install.where = pile.installation_where;
-  install.increments = static_cast<int>(pile.installation.integer("increments"));
+  install.increments = pile.installation.increments;
   supports(install);
   install.interface_gaps.push_back(
-      {kShaft, -pile.installation.real("radial_displacement"), pile.installation_where});
+      {kShaft, -pile.installation.radial_displacement, pile.installation_where});
   StageSpec pull;
   pull.name = "pullout";
   pull.where = pile.pullout_where;
-  pull.increments = static_cast<int>(pile.pullout.integer("increments"));
-  pull.duration = pile.pullout.real("duration");
-  pull.control.type = pile.pullout.string("control");
+  pull.increments = pile.pullout.increments;
+  pull.duration = pile.pullout.duration;
+  pull.control.type = pile.pullout.control;
   pull.control.where = pile.pullout_where;
-  if (pile.pullout.has("dissipation_step"))
-    pull.control.dissipation_step = pile.pullout.real("dissipation_step");
-  if (pile.pullout.has("max_increments"))
-    pull.control.max_increments = static_cast<int>(pile.pullout.integer("max_increments"));
+  if (pile.pullout.dissipation_step) pull.control.dissipation_step = *pile.pullout.dissipation_step;
+  if (pile.pullout.max_increments) pull.control.max_increments = *pile.pullout.max_increments;
   supports(pull);
   pull.boundary_conditions.push_back(
-      bc(kHead, 1, pile.pullout.real("head_displacement"), pile.pullout_where));
+      bc(kHead, 1, pile.pullout.head_displacement, pile.pullout_where));
   p.stages = {geo, install, pull};
   p.output = pile.output;
   check_stage_controls(p);

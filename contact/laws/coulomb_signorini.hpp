@@ -2,7 +2,7 @@
 /// Unilateral contact with Coulomb friction, no adhesion.
 
 #include "contact/laws/interface_law.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 namespace bipot::contact {
 
@@ -14,13 +14,15 @@ namespace bipot::contact {
 /// (De Saxcé & Feng 1998) as RCCM, of which it is the β0 = 0 case.
 class CoulombSignorini : public InterfaceLaw {
 public:
-  /// Keys: friction_coefficient μ (≥ 0, default 0).
-  static ParamSchema schema();
+  struct Parameters {
+    double friction_coefficient = 0; ///< μ (≥ 0; 0 = frictionless)
+  };
+  static ParamSchemaOf<Parameters> schema();
 
-  /// From parameters validated against schema().
-  explicit CoulombSignorini(const ParameterSet& params);
-  /// Throws InputError unless friction_coefficient ≥ 0.
-  explicit CoulombSignorini(double friction_coefficient = 0.0);
+  CoulombSignorini() : CoulombSignorini(Parameters{}) {}
+  /// Validates `p` through schema(): throws InputError unless friction_coefficient ≥ 0.
+  explicit CoulombSignorini(const Parameters& p) : CoulombSignorini(schema().checked(p)) {}
+  explicit CoulombSignorini(Checked<Parameters> p) : mu_(p->friction_coefficient) {}
 
   std::string name() const override { return "coulomb_signorini"; }
   /// μ, whatever β (β ≡ 0 for this law).

@@ -75,6 +75,23 @@ InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
   if (derivatives) {
     // Chain rule through β(jump) → μ̄(β) → τ(r, jump, μ̄) → Proj(τ, μ̄).
     const LocalVector dmu_djump = law.friction_coefficient_dbeta(out.beta) * dbeta_djump;
+    // On the slip branch, linearise ‖Δg_t‖ along the slip the projection implies, not along
+    // the iterate's Δg_t. τ − r is the cone's outward normal there, so the law's solution
+    // slides along −e, e = τ_t/‖τ_t‖, and ‖Δg_t‖ ≥ −e·Δg_t with equality exactly when it
+    // does: the derivatives below are those of τ_n = r_n − ρ(g_n + μ̄ φ(Δg_t)) with φ the
+    // line of slope −e through ‖Δg_t‖ at the iterate.
+    // Where the iterate already slides along −e (in 2D every iterate near a sliding solution)
+    // that is the generalized Jacobian; at Δg_t = 0 it is the element −e of the
+    // subdifferential. Elsewhere (an iterate sliding against its friction force, as stick →
+    // slip changes produce) the exact derivative is that of a piece the solution is not on,
+    // with the normal coupled to a slip of the wrong sign, and Newton overshoots. Measured
+    // with bench/frictional_block.py (15 steps, 2k/10k/30k DOFs): 17/24/27 Newton iterations
+    // with the exact element, 15/21/23 with this one; the Coulomb pile's default run 120 →
+    // 104 linear solves.
+    if (proj.status == ContactStatus::Slip) {
+      const LocalVector e = out.tau.tail(d - 1).normalized();
+      dpred.dtau_djump.block(0, 1, 1, d - 1) = rho * out.mu_bar * e.transpose();
+    }
     const LocalMatrix dtau_djump = dpred.dtau_djump + dpred.dtau_dmu * dmu_djump.transpose();
     derivatives->dbeta_djump = dbeta_djump;
     derivatives->dr_djump = proj.dr_dtau * dtau_djump + proj.dr_dmu * dmu_djump.transpose();

@@ -6,16 +6,10 @@
 
 namespace bipot::contact {
 
-namespace {
-template <class T> void add(Registry<InterfaceLaw>& r) {
-  r.add(T::schema(), [](const ParameterSet& p) { return std::make_unique<T>(p); });
-}
-} // namespace
-
 void register_interface_laws(Registry<InterfaceLaw>& registry) {
-  add<CoulombSignorini>(registry);
-  add<PerfectBonding>(registry);
-  add<Rccm>(registry);
+  registry.add<CoulombSignorini>();
+  registry.add<PerfectBonding>();
+  registry.add<Rccm>();
 }
 
 Registry<InterfaceLaw> builtin_interface_laws() {

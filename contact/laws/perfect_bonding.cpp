@@ -2,9 +2,9 @@
 
 namespace bipot::contact {
 
-ParamSchema PerfectBonding::schema() {
-  return ParamSchema("perfect_bonding",
-                     "perfectly bonded (tied) interface: zero jump, enforced exactly");
+ParamSchemaOf<PerfectBonding::Parameters> PerfectBonding::schema() {
+  return ParamSchemaOf<Parameters>(
+      "perfect_bonding", "perfectly bonded (tied) interface: zero jump, enforced exactly");
 }
 
 } // namespace bipot::contact

@@ -2,7 +2,7 @@
 /// Perfectly bonded (tied) interface.
 
 #include "contact/laws/interface_law.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 namespace bipot::contact {
 
@@ -13,12 +13,12 @@ namespace bipot::contact {
 /// point-wise functions below are not used. RCCM with huge w, C_n and C_t approaches it.
 class PerfectBonding : public InterfaceLaw {
 public:
-  /// No keys.
-  static ParamSchema schema();
+  struct Parameters {}; ///< no keys
+  static ParamSchemaOf<Parameters> schema();
 
   PerfectBonding() = default;
-  /// From parameters validated against schema() (always empty).
-  explicit PerfectBonding(const ParameterSet&) {}
+  explicit PerfectBonding(const Parameters& p) : PerfectBonding(schema().checked(p)) {}
+  explicit PerfectBonding(Checked<Parameters>) {}
 
   std::string name() const override { return "perfect_bonding"; }
   bool is_tied() const override { return true; }

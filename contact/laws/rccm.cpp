@@ -7,49 +7,38 @@
 
 namespace bipot::contact {
 
-ParamSchema Rccm::schema() {
-  ParamSchema s("rccm", "RCCM interface: unilateral contact, Coulomb friction and adhesion "
-                        "(Raous, Cangemi, Cocu 1999)");
-  s.real("normal_stiffness", "kN/m^3", "initial normal stiffness C_n of the sound interface")
+ParamSchemaOf<Rccm::Parameters> Rccm::schema() {
+  using P = Parameters;
+  ParamSchemaOf<P> s("rccm", "RCCM interface: unilateral contact, Coulomb friction and adhesion "
+                             "(Raous, Cangemi, Cocu 1999)");
+  s.real("normal_stiffness", &P::normal_stiffness, "kN/m^3",
+         "initial normal stiffness C_n of the sound interface")
       .positive();
-  s.real("tangential_stiffness", "kN/m^3",
+  s.real("tangential_stiffness", &P::tangential_stiffness, "kN/m^3",
          "initial tangential stiffness C_t of the sound interface")
       .positive();
-  s.real("decohesion_energy", "kJ/m^2", "decohesion energy w, dissipated per area by debonding")
+  s.real("decohesion_energy", &P::decohesion_energy, "kJ/m^2",
+         "decohesion energy w, dissipated per area by debonding")
       .positive();
-  s.real("friction_coefficient", "",
+  s.real("friction_coefficient", &P::friction_coefficient, "",
          "Coulomb friction coefficient mu once debonded (mu_bar = mu (1 - beta))")
       .non_negative()
       .with_default(0.0);
-  s.real("adhesion_viscosity", "kN*s/m", "adhesion viscosity alpha (0 = quasi-static limit)")
+  s.real("adhesion_viscosity", &P::adhesion_viscosity, "kN*s/m",
+         "adhesion viscosity alpha (0 = quasi-static limit)")
       .non_negative()
       .with_default(0.0);
-  s.real("initial_adhesion", "", "initial adhesion intensity beta0 (1 = sound, 0 = debonded)")
+  s.real("initial_adhesion", &P::initial_adhesion, "",
+         "initial adhesion intensity beta0 (1 = sound, 0 = debonded)")
       .at_least(0.0)
       .at_most(1.0)
       .with_default(1.0);
   return s;
 }
 
-Rccm::Rccm(const ParameterSet& params)
-    : Rccm(params.real("normal_stiffness"), params.real("tangential_stiffness"),
-           params.real("decohesion_energy"), params.real("friction_coefficient"),
-           params.real("adhesion_viscosity"), params.real("initial_adhesion")) {}
-
-Rccm::Rccm(double normal_stiffness, double tangential_stiffness, double decohesion_energy,
-           double friction_coefficient, double adhesion_viscosity, double initial_adhesion)
-    : cn_(normal_stiffness), ct_(tangential_stiffness), w_(decohesion_energy),
-      mu_(friction_coefficient), alpha_(adhesion_viscosity), beta0_(initial_adhesion) {
-  // The schema's own checks, so a direct construction reports exactly what the input would.
-  ParameterSet given;
-  given.set("normal_stiffness", cn_);
-  given.set("tangential_stiffness", ct_);
-  given.set("decohesion_energy", w_);
-  given.set("friction_coefficient", mu_);
-  given.set("adhesion_viscosity", alpha_);
-  given.set("initial_adhesion", beta0_);
-  validate_or_throw(schema(), given);
-}
+Rccm::Rccm(Checked<Parameters> p)
+    : cn_(p->normal_stiffness), ct_(p->tangential_stiffness), w_(p->decohesion_energy),
+      mu_(p->friction_coefficient), alpha_(p->adhesion_viscosity), beta0_(p->initial_adhesion) {}
 
 double Rccm::update_adhesion(double beta_old, const LocalVector& jump, double dtau,
                              LocalVector* dbeta_djump) const {

@@ -3,7 +3,7 @@
 /// and adhesion coupled through the adhesion intensity β ∈ [0, 1].
 
 #include "contact/laws/interface_law.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 namespace bipot::contact {
 
@@ -29,17 +29,20 @@ namespace bipot::contact {
 /// in J. Martins, M. Marques (eds), Contact Mechanics, Kluwer (2002) 333–346.
 class Rccm : public InterfaceLaw {
 public:
-  /// Keys: normal_stiffness C_n (kN/m³, > 0), tangential_stiffness C_t (kN/m³, > 0),
-  /// decohesion_energy w (kJ/m², > 0), friction_coefficient μ (≥ 0, default 0),
-  /// adhesion_viscosity α (kN·s/m, ≥ 0, default 0), initial_adhesion β0 ([0, 1], default 1).
-  static ParamSchema schema();
+  /// C_n, C_t, w, μ, α, β0 (units and ranges in schema()).
+  struct Parameters {
+    double normal_stiffness = 0;     ///< C_n (kN/m³)
+    double tangential_stiffness = 0; ///< C_t (kN/m³)
+    double decohesion_energy = 0;    ///< w (kJ/m²)
+    double friction_coefficient = 0; ///< μ
+    double adhesion_viscosity = 0;   ///< α (kN·s/m)
+    double initial_adhesion = 1;     ///< β0
+  };
+  static ParamSchemaOf<Parameters> schema();
 
-  /// From parameters validated against schema().
-  explicit Rccm(const ParameterSet& params);
-  /// Throws InputError when a value is outside the ranges of schema().
-  Rccm(double normal_stiffness, double tangential_stiffness, double decohesion_energy,
-       double friction_coefficient = 0.0, double adhesion_viscosity = 0.0,
-       double initial_adhesion = 1.0);
+  /// Validates `p` through schema(): throws InputError with the input file's messages.
+  explicit Rccm(const Parameters& p) : Rccm(schema().checked(p)) {}
+  explicit Rccm(Checked<Parameters> p);
 
   std::string name() const override { return "rccm"; }
   double initial_adhesion() const override { return beta0_; }
@@ -62,12 +65,7 @@ public:
   double adhesion_viscosity() const { return alpha_; } ///< α (kN·s/m)
 
 private:
-  double cn_;
-  double ct_;
-  double w_;
-  double mu_;
-  double alpha_;
-  double beta0_;
+  double cn_, ct_, w_, mu_, alpha_, beta0_;
 };
 
 } // namespace bipot::contact

@@ -17,10 +17,11 @@
 ///   multiplier loop.
 
 #include "fem/core/nonlinear_solver_options.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 #include "fem/core/registry.hpp"
 
 #include <string>
+#include <vector>
 
 namespace bipot::contact {
 
@@ -29,6 +30,10 @@ struct ContactSolverOptions : NonlinearSolverOptions {
   double augmentation = 0;         ///< ρ (kN/m³); 0 = automatic per pair
   double augmentation_factor = 30; ///< multiplies the automatic ρ
 };
+
+/// Each solver's keys bound to the members of ContactSolverOptions (the registry's schemas;
+/// a key a solver lacks leaves the struct's value).
+std::vector<ParamSchemaOf<ContactSolverOptions>> contact_solver_schemas();
 
 /// The solvers by YAML name, each with its parameter schema (for validation and docs).
 /// Registry entries build a ContactSolverOptions from validated parameters.

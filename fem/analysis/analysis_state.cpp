@@ -69,6 +69,7 @@ void StaticAnalysis::Impl::load_state(const StateArrays& state) {
   for (std::size_t k = 0; k < interfaces.size(); ++k)
     interfaces[k]->set_obstacle_displacement(obstacles[k]);
   solid.load_state(with_prefix(state, "solid."));
+  bulk_product.initial_stress_changed();
   // The laws the done stages put in force, then the interface states saved under them.
   for (std::size_t s = 0; s < stages_done + (within ? 1 : 0); ++s)
     for (const auto& ia : interfaces)

@@ -60,9 +60,17 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     for (const auto& [d, v] : target)
       constraints.set(d, outer == 0 ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
     const bool refactor = !schur_ready || !linear || constrained_dofs != schur_constrained;
+    // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
+    // from products with K, assembled with K at each refactorisation.
+    const bool by_product = linear && rigid.empty();
     R.set_zero();
     if (refactor) K->set_zero();
-    solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
+    if (refactor && by_product)
+      bulk_product.assemble(solid, u, constraints, *K, R);
+    else if (by_product && bulk_product.ready())
+      bulk_product.residual(solid, *K, u, constraints, R);
+    else
+      solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
     R.finish_assembly();
     if (refactor) K->finish_assembly();
     add_step_loads(constraints);
@@ -78,7 +86,10 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       F_step.axpy(1.0, F_cur);
       F_step.axpy(-1.0, F_prev);
       R.set_zero();
-      solid.assemble(u, ahead, nullptr, R);
+      if (by_product && bulk_product.ready())
+        bulk_product.residual(solid, *K, u, ahead, R);
+      else
+        solid.assemble(u, ahead, nullptr, R);
       R.finish_assembly();
       add_step_loads(ahead);
       R1.copy(R);

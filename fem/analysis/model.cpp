@@ -144,7 +144,7 @@ Model build_model(const ProblemSpec& spec, const Registry<Material>& materials,
       problems.push_back(m.where + ": " + unknown_set("region", m.region, region_names));
       continue;
     }
-    model.materials.push_back(materials.create(m.type, m.parameters));
+    model.materials.push_back(materials.create_validated(m.type, m.parameters));
     model.material_of_region[it->second] = model.materials.back().get();
   }
   std::vector<bool> region_used(max_id + 1, false);

@@ -329,6 +329,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     time += stage.duration;
     if (stage.reset_displacements) {
       solid.absorb_stress_into_initial(u);
+      bulk_product.initial_stress_changed();
       for (const auto& ia : interfaces)
         ia->absorb_displacements();
       energy->reset_displacements();

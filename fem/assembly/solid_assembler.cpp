@@ -74,13 +74,14 @@ void SolidAssembler::set_initial_stress(
   }
 }
 
-// Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and
-// K_e = tangent (row-major), both sized num_dofs. Also records the trial cell averages and,
+// Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and,
+// if `tangent`, K_e = the tangent (row-major), both sized num_dofs; otherwise K_e stays empty
+// (internal forces alone skip the B^T D B products). Also records the trial cell averages and,
 // if `point_stress` is given, calls it with (point index, strain of `u`, material stress,
 // whether the material has internal variables) at every point.
 template <class CellKernel>
 void SolidAssembler::loop(
-    const std::vector<double>& u, CellKernel&& kernel,
+    const std::vector<double>& u, bool tangent, CellKernel&& kernel,
     const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress) {
   std::vector<Index> cell_dofs;
   std::vector<double> u_e, f_e, K_e;
@@ -98,15 +99,16 @@ void SolidAssembler::loop(
     for (int a = 0; a < nd; ++a)
       u_e[a] = u[cell_dofs[a]];
     f_e.assign(nd, 0.0);
-    K_e.assign(static_cast<std::size_t>(nd) * nd, 0.0);
+    K_e.assign(tangent ? static_cast<std::size_t>(nd) * nd : 0, 0.0);
     B.resize(nv_, nd);
     const Material& mat = *materials_[mesh_.cell_regions[c]];
     const int ns = mat.num_state_variables();
     const double* old_state = ns > 0 ? &state_[state_offset_[k]] : nullptr;
     double* new_state = ns > 0 ? &trial_state_[state_offset_[k]] : nullptr;
     Eigen::Map<Eigen::VectorXd> f(f_e.data(), nd);
+    const int nk = tangent ? nd : 0;
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
-        K_e.data(), nd, nd);
+        K_e.data(), nk, nk);
     double* avg_strain = &trial_cell_strain_[k * nv_];
     double* avg_stress = &trial_cell_stress_[k * nv_];
     std::fill(avg_strain, avg_strain + nv_, 0.0);
@@ -133,6 +135,7 @@ void SolidAssembler::loop(
       }
       const double w = ev.JxW(q);
       f.noalias() += w * (B.transpose() * total);
+      if (!tangent) continue;
       DB.noalias() = D * B;
       Km.noalias() += w * (B.transpose() * DB);
     }
@@ -141,28 +144,44 @@ void SolidAssembler::loop(
 }
 
 void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& constraints,
-                              SparseMatrix* K, DistributedVector& R) {
-  loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
-    for (auto& v : f_e)
-      v = -v;                                             // residual contribution −f_int
-    if (rigid_) rigid_->distribute(cell_dofs, f_e, &K_e); // before Dirichlet: on the masters
-    const int nd = static_cast<int>(cell_dofs.size());
-    constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
-    if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
-    for (int a = 0; a < nd; ++a)
-      R.add(cell_dofs[a], f_e[a]);
-  });
+                              SparseMatrix* K, DistributedVector& R, SparseMatrix* removed) {
+  std::vector<double> kept;
+  loop(u, true,
+       [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
+         for (auto& v : f_e)
+           v = -v;                                             // residual contribution −f_int
+         if (rigid_) rigid_->distribute(cell_dofs, f_e, &K_e); // before Dirichlet: on the masters
+         const int nd = static_cast<int>(cell_dofs.size());
+         if (removed) {
+           // What the elimination takes out of K_e: entries in a constrained row or column.
+           kept.assign(K_e.size(), 0.0);
+           bool any = false;
+           for (int a = 0; a < nd; ++a)
+             for (int b = 0; b < nd; ++b)
+               if (constraints.is_constrained(cell_dofs[a]) ||
+                   constraints.is_constrained(cell_dofs[b])) {
+                 kept[a * nd + b] = K_e[a * nd + b];
+                 any = true;
+               }
+           if (any) removed->add_dense(cell_dofs.data(), nd, kept.data());
+         }
+         constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
+         if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
+         for (int a = 0; a < nd; ++a)
+           R.add(cell_dofs[a], f_e[a]);
+       });
   if (rigid_ && K) rigid_->add_inactive_rows(R.distribution(), *K);
 }
 
 void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f,
                                     int region) {
   region_filter_ = region;
-  loop(u, [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
-    if (rigid_) rigid_->distribute(cell_dofs, f_e, nullptr);
-    for (std::size_t a = 0; a < cell_dofs.size(); ++a)
-      f.add(cell_dofs[a], f_e[a]);
-  });
+  loop(u, false,
+       [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
+         if (rigid_) rigid_->distribute(cell_dofs, f_e, nullptr);
+         for (std::size_t a = 0; a < cell_dofs.size(); ++a)
+           f.add(cell_dofs[a], f_e[a]);
+       });
   region_filter_ = -1;
 }
 
@@ -179,7 +198,7 @@ void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
   std::vector<double> added(n, 0.0), strain(state_.empty() ? 0 : n, 0.0);
   std::vector<bool> history(qp_offset_.back(), false);
   loop(
-      u, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
+      u, false, [](std::vector<Index>&, std::vector<double>&, std::vector<double>&) {},
       [&](Index p, const Voigt& eps, const Voigt& sig, bool has_state) {
         history[p] = has_state;
         for (int i = 0; i < nv_; ++i)
@@ -230,11 +249,14 @@ std::vector<double> SolidAssembler::cell_output_fields() const {
   return out;
 }
 
-void SolidAssembler::add_to_pattern(SparsityPattern& pattern) const {
+void SolidAssembler::add_to_pattern(SparsityPattern& pattern, const Constraints* touching) const {
   std::vector<Index> cell_dofs;
   for (Index c : owned_cells_) {
     dofs_.cell_dofs(mesh_, c, cell_dofs);
     if (rigid_) rigid_->distribute(cell_dofs);
+    if (touching && std::none_of(cell_dofs.begin(), cell_dofs.end(),
+                                 [&](Index d) { return touching->is_constrained(d); }))
+      continue;
     pattern.add_cell(cell_dofs);
   }
 }

@@ -35,9 +35,11 @@ public:
 
   /// For the total displacement `u` (all global DOFs, replicated): adds the condensed local
   /// systems K_e du = −f_int,e to `K` (if not null) and `R`. Trial cell averages of strain
-  /// and stress are kept for commit().
+  /// and stress are kept for commit(). `removed` (if not null) receives the entries of the
+  /// local matrices that the elimination takes out, those in a constrained row or column
+  /// (LinearBulkResidual rebuilds the residual from them and K).
   void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
-                DistributedVector& R);
+                DistributedVector& R, SparseMatrix* removed = nullptr);
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
@@ -69,8 +71,11 @@ public:
   /// Rigid bodies (not owned; null for none): every cell system, pattern and internal force
   /// is transformed onto their masters, and assemble() adds the inactive DOFs' identity rows.
   void set_rigid_bodies(const RigidBodyConstraints* rigid) { rigid_ = rigid; }
-  /// Adds the DOFs of every owned cell to a sparsity pattern.
-  void add_to_pattern(SparsityPattern& pattern) const;
+  /// Adds the DOFs of every owned cell (with `touching`: of those with a constrained DOF) to
+  /// a sparsity pattern.
+  void add_to_pattern(SparsityPattern& pattern, const Constraints* touching = nullptr) const;
+  /// Whether an initial stress is set (f_int(0) ≠ 0).
+  bool has_initial_stress() const { return !sigma0_.empty(); }
   /// Committed cell averages (over quadrature points) of strain and stress of the owned
   /// cells, Voigt components interleaved.
   void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
@@ -99,7 +104,7 @@ private:
 
   ElementValues& values_for(CellType type);
   template <class CellKernel>
-  void loop(const std::vector<double>& u, CellKernel&& kernel,
+  void loop(const std::vector<double>& u, bool tangent, CellKernel&& kernel,
             const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress = {});
 
   const Mesh& mesh_;

@@ -5,7 +5,7 @@
 
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 #include <functional>
 #include <map>
@@ -53,6 +53,14 @@ public:
     if (contains(name)) throw Error(what_ + " '" + name + "' is registered twice");
     entries_[name] = Entry{std::move(schema), std::move(factory)};
   }
+  /// Registers T under T::schema() (a ParamSchemaOf<T::Parameters>), built by its constructor
+  /// from Checked<T::Parameters>: the one-line registration of a law or material.
+  template <class T> void add() {
+    auto schema = T::schema();
+    add(schema, [schema](const ParameterSet& p) -> std::unique_ptr<Base> {
+      return std::make_unique<T>(schema.fill(p));
+    });
+  }
   bool contains(const std::string& name) const override { return entries_.count(name) != 0; }
   std::vector<std::string> names() const override {
     std::vector<std::string> out;
@@ -70,6 +78,13 @@ public:
     const Entry& e = entry(name);
     validate_or_throw(e.schema, params);
     return e.factory(params);
+  }
+
+  /// Builds the object from parameters the input reader has already validated against
+  /// schema(name) (file:line:col messages): no second validation.
+  std::unique_ptr<Base> create_validated(const std::string& name,
+                                         const ParameterSet& validated) const {
+    return entry(name).factory(validated);
   }
 
 private:

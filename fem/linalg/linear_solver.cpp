@@ -22,10 +22,6 @@
 
 namespace bipot {
 
-namespace detail {
-void validate_linear_solver_options(const LinearSolverOptions& options);
-}
-
 namespace {
 
 using detail::CrsMatrix;
@@ -177,10 +173,8 @@ Teuchos::RCP<MultiVector> LinearSolver::Impl::near_null_space(const SparseMatrix
   return modes;
 }
 
-LinearSolver::LinearSolver(const LinearSolverOptions& options)
-    : options_(options), impl_(std::make_unique<Impl>()) {
-  detail::validate_linear_solver_options(options_);
-}
+LinearSolver::LinearSolver(Checked<LinearSolverOptions> options)
+    : options_(*options), impl_(std::make_unique<Impl>()) {}
 
 LinearSolver::~LinearSolver() = default;
 LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;

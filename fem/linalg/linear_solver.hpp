@@ -1,7 +1,7 @@
 #pragma once
 /// Krylov and direct solvers for SparseMatrix systems (Belos, MueLu, Ifpack2, Amesos2).
 
-#include "fem/core/parameter_schema.hpp"
+#include "fem/core/parameter_binding.hpp"
 
 #include <memory>
 #include <string>
@@ -12,8 +12,9 @@ namespace bipot {
 class DistributedVector;
 class SparseMatrix;
 
-/// How a LinearSolver solves. Validated by LinearSolver's constructor; schema() describes the
-/// same keys for the YAML layer.
+/// How a LinearSolver solves. LinearSolver::schema() declares the keys bound to these members
+/// (fill() builds the struct from validated YAML input); the constructor from a plain struct
+/// validates it through the same schema.
 struct LinearSolverOptions {
   std::string method = "cg";            ///< cg | gmres | direct
   std::string preconditioner = "muelu"; ///< muelu | lu | ilu | jacobi | none (not for direct)
@@ -25,9 +26,6 @@ struct LinearSolverOptions {
   int lu_refresh = 0;   ///< lu: refactorise after this many GMRES iterations on old factors;
                         ///< 0 = once the time spent on them reaches one factorisation's
   bool verbose = false; ///< print Krylov convergence history (rank 0)
-
-  /// Options from a validated ParameterSet (keys of LinearSolver::schema()).
-  static LinearSolverOptions from_parameters(const ParameterSet& params);
 };
 
 /// Outcome of LinearSolver::solve().
@@ -60,7 +58,10 @@ struct LinearSolveStats {
 class LinearSolver {
 public:
   /// Throws bipot::InputError listing every invalid option with the allowed values.
-  explicit LinearSolver(const LinearSolverOptions& options);
+  explicit LinearSolver(const LinearSolverOptions& options)
+      : LinearSolver(schema().checked(options)) {}
+  /// Options already validated (schema().fill of the input's, or schema().checked).
+  explicit LinearSolver(Checked<LinearSolverOptions> options);
   ~LinearSolver();
   LinearSolver(LinearSolver&&) noexcept;
   LinearSolver& operator=(LinearSolver&&) noexcept;
@@ -85,7 +86,7 @@ public:
   LinearSolveStats solve(const DistributedVector& b, DistributedVector& x);
 
   /// Keys, types, defaults and allowed values of LinearSolverOptions ("linear_solver").
-  static ParamSchema schema();
+  static ParamSchemaOf<LinearSolverOptions> schema();
 
 private:
   struct Impl;

@@ -102,7 +102,7 @@ TEST_P(PatchTest, LinearFieldIsReproduced) {
     return v;
   };
 
-  LinearElastic steel(2.0e8, 0.3);
+  LinearElastic steel({2.0e8, 0.3});
   DofMap dofs(mesh.num_nodes(), dim);
   DofDistribution dist(mesh.num_nodes(), dim);
   std::vector<Index> owned_cells;

@@ -336,8 +336,8 @@ GeostaticState snapshot(const Model& m, const StaticAnalysis& s) {
 // Runs the geostatic stage and then an installation stage that changes nothing (no
 // interference): returns the states at the end of each (the last step of a stage wins).
 std::pair<GeostaticState, GeostaticState> geostatic_and_rest(pile::PileSpec spec) {
-  spec.installation.set("radial_displacement", 0.0);
-  spec.installation.set("increments", 1L);
+  spec.installation.radial_displacement = 0.0;
+  spec.installation.increments = 1;
   ProblemSpec problem = pile::make_problem(spec);
   problem.stages.resize(2); // no pull-out
   std::pair<GeostaticState, GeostaticState> out;
@@ -381,13 +381,13 @@ PressureError pressure_error(const std::vector<PairState>& shaft, double K0, dou
 TEST(PilePullout, GeostaticStageShippedInput) {
   const pile::PileSpec spec =
       pile::read_pile_text(shipped_rccm_text(), "rccm.yaml", bipot::builtin_catalogue());
-  const double K0 = spec.geostatic.real("K0"), gamma = spec.soil.parameters.real("unit_weight");
-  const double L = spec.geometry.real("pile_length");
+  const double K0 = spec.geostatic.K0, gamma = spec.soil.parameters.real("unit_weight");
+  const double L = spec.geometry.pile_length;
   const auto [geo, rest] = geostatic_and_rest(spec);
   ASSERT_FALSE(geo.shaft.empty());
   ASSERT_EQ(geo.shaft.size(), rest.shaft.size());
   ASSERT_EQ(geo.soil_cells.size(), rest.soil_cells.size());
-  const double h = L / static_cast<double>(spec.mesh.integer("shaft_cells"));
+  const double h = L / static_cast<double>(spec.mesh.shaft_cells);
   const PressureError deep = pressure_error(geo.shaft, K0, gamma, 1.0, L - 0.5 * h);
   const PressureError shallow = pressure_error(geo.shaft, K0, gamma, 0.5 * h, 1.0);
   std::printf("geostatic (shipped input): p vs K0 gamma |z|: %.2f %% (%.3f kPa) from 1 m to the "
@@ -424,7 +424,7 @@ TEST(PilePullout, GeostaticStageShippedInput) {
   for (std::size_t i = 0; i < geo.soil_cells.size(); ++i)
     for (int j = 2; j < 6; ++j)
       change = std::max(change, std::abs(geo.soil_cells[i][j] - rest.soil_cells[i][j]));
-  EXPECT_LT(change, 1e-5 * gamma * spec.geometry.real("soil_depth"));
+  EXPECT_LT(change, 1e-5 * gamma * spec.geometry.soil_depth);
 }
 
 // The same with the pile as heavy as the soil and quadratic cells: the geostatic stress is
@@ -437,10 +437,10 @@ TEST(PilePullout, GeostaticStageShippedInput) {
 TEST(PilePullout, GeostaticStageIsExactForEqualUnitWeights) {
   pile::PileSpec spec =
       pile::read_pile_text(shipped_rccm_text(), "rccm.yaml", bipot::builtin_catalogue());
-  const double K0 = spec.geostatic.real("K0"), gamma = spec.soil.parameters.real("unit_weight");
-  const double L = spec.geometry.real("pile_length");
+  const double K0 = spec.geostatic.K0, gamma = spec.soil.parameters.real("unit_weight");
+  const double L = spec.geometry.pile_length;
   spec.pile.parameters.set("unit_weight", gamma);
-  spec.mesh.set("cell", std::string("quad8"));
+  spec.mesh.cell = "quad8";
   const GeostaticState geo = geostatic_and_rest(spec).first;
   const PressureError e = pressure_error(geo.shaft, K0, gamma, 0.0, L);
   double toe_error = 0;

@@ -40,7 +40,7 @@ struct Attempts {
 // to `tolerance` (0: the input's).
 std::map<long long, Point> pull_out(pile::PileSpec spec, const std::string& control,
                                     double tolerance, Attempts* attempts = nullptr) {
-  spec.pullout.set("control", control);
+  spec.pullout.control = control;
   if (tolerance > 0) spec.contact_solver.parameters.set("tolerance", tolerance);
   const Model model = build_model(pile::make_problem(spec), bipot::builtin_catalogue());
   StaticAnalysis analysis(model);
@@ -131,8 +131,8 @@ TEST(PileTraced, NoTracedStepNeedsManyIterationsWhateverTheStepLength) {
   pile::PileSpec spec =
       pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml",
                            bipot::builtin_catalogue());
-  for (long increments : {100L, 120L}) {
-    spec.pullout.set("increments", increments);
+  for (int increments : {100, 120}) {
+    spec.pullout.increments = increments;
     int most = 0, falling = 0;
     Attempts attempts;
     for (const auto& [key, p] : pull_out(spec, "dissipation", 0.0, &attempts)) {
@@ -141,7 +141,7 @@ TEST(PileTraced, NoTracedStepNeedsManyIterationsWhateverTheStepLength) {
       most = std::max(most, p.iterations);
       if (p.unstable) ++falling;
     }
-    std::printf("%ld increments: at most %d Newton iterations per traced step, %d steps on the "
+    std::printf("%d increments: at most %d Newton iterations per traced step, %d steps on the "
                 "falling branch, %d linear solves in %d failed attempts\n",
                 increments, most, falling, attempts.failed_solves, attempts.failed);
     EXPECT_GE(falling, 3) << increments << " increments";

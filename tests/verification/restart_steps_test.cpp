@@ -30,9 +30,12 @@ namespace {
 
 using test::block_stage;
 
-// max_iterations: 8 makes the cut-backs a property of the model, not of round-off: 5 to 8
-// give the same increments at 1 and 2 ranks. At 10 the iterations sat at the edge and 1 and 2
-// ranks (whose MUMPS factorisations round differently) took different cut-back paths.
+// The cut-backs must be a property of the model, not of round-off: every test here passes at
+// 1 and 2 ranks for max_iterations 5 to 7 at tolerance 1e-11, and this takes the middle. At
+// tolerance 1e-13 the last residuals sat at the round-off floor, so whether an attempt
+// converged in its last allowed iteration was round-off's choice, and a restart (whose GMRES
+// starts from fresh factors) or another rank count could take other cut-backs. Each new
+// solver change moved that edge (max_iterations 10, then 8, were chosen so before).
 const std::string input =
     std::string("kinematics: plane_strain\n") + test::block_on_base_mesh +
     "materials:\n"
@@ -43,7 +46,7 @@ const std::string input =
     "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
     "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
     "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.01}\n"
-    "contact_solver: {type: generalized_newton, tolerance: 1.0e-13, max_iterations: 8}\n"
+    "contact_solver: {type: generalized_newton, tolerance: 1.0e-11, max_iterations: 6}\n"
     "stages:\n" +
     block_stage("press", 0, -2e-3) + block_stage("shear", 6e-3, -2e-3, "", 4) +
     block_stage("lift", 8e-3, 1e-3,

@@ -10,6 +10,7 @@
 #include "fem/assembly/condensed_interface_system.hpp"
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/interface_enforcement.hpp"
+#include "fem/assembly/linear_bulk_residual.hpp"
 #include "fem/assembly/load_assembler.hpp"
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/assembly/solid_assembler.hpp"
@@ -154,6 +155,9 @@ struct StaticAnalysis::Impl {
   // the bulk tangent or the constrained DOFs change.
   std::unique_ptr<CondensedInterfaceSystem> newton_system;
   SchurComplementSolver schur;
+  /// generalized_newton with a linear bulk and no rigid bodies: the bulk residual of each
+  /// increment from products with the factorised K (assembled with it) instead of a cell loop.
+  LinearBulkResidual bulk_product{dist};
   ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
   bool schur_ready = false;
   std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
@@ -184,9 +188,8 @@ struct StaticAnalysis::Impl {
         solid(m.mesh, m.kinematics, dofs, m.material_of_region,
               analysis_detail::indices_of(cell_owned)),
         loads(m.mesh, m.kinematics, dofs, cell_owned), R(dist), du(dist), F_prev(dist), F_cur(dist),
-        F_step(dist), reaction(dist),
-        solver(LinearSolverOptions::from_parameters(m.spec.linear_solver)), u(dofs.num_dofs(), 0.0),
-        linear(analysis_detail::all_linear(m)) {
+        F_step(dist), reaction(dist), solver(LinearSolver::schema().fill(m.spec.linear_solver)),
+        u(dofs.num_dofs(), 0.0), linear(analysis_detail::all_linear(m)) {
     if (m.interface_module) {
       EnforcedInterfaces enforced = m.interface_module->enforce(m, dofs, dist);
       interfaces = std::move(enforced.interfaces);

@@ -32,12 +32,17 @@ using bipot::contact::LocalVector;
 // traction is −k g, and the Coulomb cone has μ = 0 (frictionless contact when it closes).
 class SpringJoint : public bipot::contact::InterfaceLaw {
 public:
-  static bipot::ParamSchema schema() {
-    bipot::ParamSchema s("spring_joint", "a linear spring in every direction (consumer's law)");
-    s.real("stiffness", "kN/m^3", "spring stiffness k per unit area").positive();
+  struct Parameters {
+    double stiffness = 0;
+  };
+  static bipot::ParamSchemaOf<Parameters> schema() {
+    bipot::ParamSchemaOf<Parameters> s("spring_joint",
+                                       "a linear spring in every direction (consumer's law)");
+    s.real("stiffness", &Parameters::stiffness, "kN/m^3", "spring stiffness k per unit area")
+        .positive();
     return s;
   }
-  explicit SpringJoint(const bipot::ParameterSet& p) : k_(p.real("stiffness")) {}
+  explicit SpringJoint(bipot::Checked<Parameters> p) : k_(p->stiffness) {}
   std::string name() const override { return "spring_joint"; }
   double initial_adhesion() const override { return 1.0; }
   double update_adhesion(double beta_old, const LocalVector& jump, double,
@@ -65,14 +70,17 @@ private:
 // engineering shear strains).
 class LameElastic : public bipot::Material {
 public:
-  static bipot::ParamSchema schema() {
-    bipot::ParamSchema s("lame_elastic", "isotropic elasticity from Lamé constants (consumer's)");
-    s.real("lambda", "kPa", "first Lamé constant").non_negative();
-    s.real("mu", "kPa", "shear modulus").positive();
+  struct Parameters {
+    double lambda = 0, mu = 0;
+  };
+  static bipot::ParamSchemaOf<Parameters> schema() {
+    bipot::ParamSchemaOf<Parameters> s("lame_elastic",
+                                       "isotropic elasticity from Lamé constants (consumer's)");
+    s.real("lambda", &Parameters::lambda, "kPa", "first Lamé constant").non_negative();
+    s.real("mu", &Parameters::mu, "kPa", "shear modulus").positive();
     return s;
   }
-  explicit LameElastic(const bipot::ParameterSet& p)
-      : lambda_(p.real("lambda")), mu_(p.real("mu")) {}
+  explicit LameElastic(bipot::Checked<Parameters> p) : lambda_(p->lambda), mu_(p->mu) {}
   std::string name() const override { return "lame_elastic"; }
   bool is_linear() const override { return true; }
   void update(const bipot::Voigt& strain, const bipot::Voigt&, const double*, bipot::Voigt& stress,
@@ -92,10 +100,6 @@ public:
 private:
   double lambda_, mu_;
 };
-
-template <class T> auto factory() {
-  return [](const bipot::ParameterSet& p) { return std::make_unique<T>(p); };
-}
 
 constexpr double lambda = 4.0e3, mu = 6.0e3, k = 2.0e4, delta = 1.0e-3;
 
@@ -128,11 +132,11 @@ stages:
 int main(int argc, char** argv) {
   bipot::ParallelEnvironment env(argc, argv);
   bipot::Catalogue catalogue = bipot::builtin_catalogue();
-  catalogue.interface_laws.add(SpringJoint::schema(), factory<SpringJoint>());
-  catalogue.materials.add(LameElastic::schema(), factory<LameElastic>());
+  catalogue.interface_laws.add<SpringJoint>();
+  catalogue.materials.add<LameElastic>();
   bool duplicate_refused = false;
   try {
-    catalogue.materials.add(LameElastic::schema(), factory<LameElastic>());
+    catalogue.materials.add<LameElastic>();
   } catch (const bipot::Error&) {
     duplicate_refused = true;
   }

@@ -87,7 +87,7 @@ TEST(BipotentialFixedPoint, StatesViolatingTheLawAreNotFixedPoints) {
 
 TEST(BipotentialFixedPoint, EvaluateReproducesTheFixedPointWithSlipFromTheOldState) {
   // Through evaluate(): Δg_t = jump_t − old.jump_t, closed slip under Coulomb–Signorini.
-  const CoulombSignorini law(0.5);
+  const CoulombSignorini law({0.5});
   InterfaceState old = initial_state(law, 3);
   old.jump = vec({0.0, 1e-3, 1e-3});
   const LocalVector jump = vec({0.0, 1e-3 + 3e-4, 1e-3 - 4e-4}); // Δg_t = (3, −4)·1e-4

@@ -12,7 +12,7 @@ namespace {
 using test::vec;
 
 TEST(FrozenAdhesion, HoldsBetaAndForwardsEverythingElse) {
-  const Rccm rccm(1e6, 4e5, 0.05, 0.5);
+  const Rccm rccm({1e6, 4e5, 0.05, 0.5});
   const FrozenAdhesion frozen(rccm);
   // A jump far beyond the threshold: RCCM itself would drop β from 0.7 to w/E ≈ 0.0125.
   const LocalVector jump = vec({1e-3, 2e-3});

@@ -108,13 +108,13 @@ TEST(InterfaceLawRegistry, OutOfRangeValuesNameKeyAndInterval) {
   }
   // The direct constructor reports the same way.
   try {
-    Rccm(1e6, 1e6, 0.05, 0.0, 0.0, 1.5);
+    Rccm({1e6, 1e6, 0.05, 0.0, 0.0, 1.5});
     ADD_FAILURE() << "no exception";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "rccm.initial_adhesion: value 1.5 is out of range [0, 1]");
   }
   try {
-    CoulombSignorini(-0.1);
+    CoulombSignorini({-0.1});
     ADD_FAILURE() << "no exception";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),

@@ -24,7 +24,7 @@ const std::vector<LocalVector> kJumps = {vec({3e-4, 2e-4}), vec({-1e-4, 5e-4}),
 
 TEST(RccmDerivatives, AdhesionUpdateQuasiStaticAndViscous) {
   for (double alpha : {0.0, 1e-2}) {
-    const Rccm law(1e6, 4e5, 0.01, 0.3, alpha);
+    const Rccm law({1e6, 4e5, 0.01, 0.3, alpha});
     for (const auto& jump : kJumps) {
       const double beta_old = 0.9;
       LocalVector db;
@@ -43,7 +43,7 @@ TEST(RccmDerivatives, AdhesionUpdateQuasiStaticAndViscous) {
 TEST(RccmDerivatives, AdhesionUpdateIsFlatWhereBetaStays) {
   // Small jumps (E β_old < w): β = β_old, derivative exactly zero, as is its FD.
   for (double alpha : {0.0, 1e-2}) {
-    const Rccm law(1e6, 4e5, 0.05, 0.3, alpha);
+    const Rccm law({1e6, 4e5, 0.05, 0.3, alpha});
     for (const auto& small : {vec({1e-5, 1e-5}), vec({1e-5, -2e-5, 1e-5})}) {
       LocalVector db;
       EXPECT_EQ(law.update_adhesion(0.7, small, 0.5, &db), 0.7);
@@ -55,7 +55,7 @@ TEST(RccmDerivatives, AdhesionUpdateIsFlatWhereBetaStays) {
 }
 
 TEST(RccmDerivatives, AdhesiveTraction) {
-  const Rccm law(1e6, 4e5, 0.01);
+  const Rccm law({1e6, 4e5, 0.01});
   for (const auto& jump : kJumps) {
     const double beta = 0.6;
     LocalMatrix dt;
@@ -76,18 +76,21 @@ TEST(RccmDerivatives, AdhesiveTraction) {
 }
 
 // evaluate() with adhesion being lost (viscous, so β, μ̄, τ and r all move with the jump) in
-// each branch of the projection, 2D and 3D.
+// each branch of the projection, 2D and 3D. The slip cases slide against their friction force
+// (r_t opposite to Δg_t), as a solution does, where evaluate()'s slip element is the exact
+// derivative (slip_linearisation_test.cpp covers the other side).
 TEST(RccmDerivatives, EvaluateChainRuleInEachBranch) {
-  const Rccm law(1.0, 1.0, 0.02, 0.6, 0.5); // nondimensional: tractions, jumps O(0.1..1)
+  const Rccm law({1.0, 1.0, 0.02, 0.6, 0.5}); // nondimensional: tractions, jumps O(0.1..1)
   struct Case {
     LocalVector old_jump, jump, r;
     ContactStatus status;
   };
   const std::vector<Case> cases = {
-      {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({1.0, 0.3}), ContactStatus::Slip},
+      {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({1.0, -0.3}), ContactStatus::Slip},
       {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({2.0, 0.05}), ContactStatus::Stick},
       {vec({0.0, 0.05}), vec({0.1, 0.15}), vec({0.05, 0.0}), ContactStatus::Open},
-      {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({1.0, 0.3, 0.0}), ContactStatus::Slip},
+      {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({1.0, -0.3, -0.09}),
+       ContactStatus::Slip},
       {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({2.0, 0.05, 0.0}), ContactStatus::Stick},
       {vec({0.0, 0.05, 0.02}), vec({0.1, 0.15, 0.05}), vec({0.05, 0.0, 0.0}), ContactStatus::Open}};
   const double h = 1e-7; // on O(0.1) jumps and O(1) tractions

@@ -54,7 +54,7 @@ double closed_form(double g, double stiffness) {
 }
 
 void check_monotonic(const LocalVector& direction, double stiffness) {
-  const Rccm law(kCn, kCt, kW, 0.5);
+  const Rccm law({kCn, kCt, kW, 0.5});
   const double g_star = std::sqrt(kW / stiffness);
   // 1000 steps up to g* (a grid point up to rounding), on to 50 g*.
   const int per_gstar = 1000, n = 50 * per_gstar;
@@ -89,7 +89,7 @@ TEST(Rccm, MonotonicShearMatchesClosedForm) {
 
 TEST(Rccm, MixedModeQuasiStaticAdhesion) {
   // β = min(β_old, w/E), E = C_n⟨g_n⟩₊² + C_t‖g_t‖²; a closing jump does not count in E.
-  const Rccm law(kCn, kCt, kW);
+  const Rccm law({kCn, kCt, kW});
   const LocalVector jump = vec({3e-4, 2e-4, -1e-4});
   const double energy = kCn * 9e-8 + kCt * 5e-8;
   // One division: a couple of ulps.
@@ -101,7 +101,7 @@ TEST(Rccm, MixedModeQuasiStaticAdhesion) {
 }
 
 TEST(Rccm, IrreversibleUnloadingIsLinearWithDamagedStiffness) {
-  const Rccm law(kCn, kCt, kW);
+  const Rccm law({kCn, kCt, kW});
   const double g_star = std::sqrt(kW / kCn);
   // Open to 3 g*, unload to 1.5 g* and back to 0, reload to 3 g*, continue to 5 g*.
   std::vector<double> path;
@@ -162,7 +162,7 @@ double implicit_euler_beta(const Rccm& law, double t_end, double dtau) {
 }
 
 TEST(Rccm, ViscousAdhesionConvergesAtFirstOrderToRk4) {
-  const Rccm law(1.0, 1.0, 1.0, 0.0, 1.0);
+  const Rccm law({1.0, 1.0, 1.0, 0.0, 1.0});
   const double t_end = 3.0; // onset at τ = 1; β(3) ≈ 0.122, well above the rate-free 1/9
   const double reference = rk4_beta(t_end, 1e-5);
   // RK4 is 4th order except for one kink (β̇ switching on): halving 2e-5 → 1e-5 changes β by
@@ -184,13 +184,13 @@ TEST(Rccm, ViscousAdhesionConvergesAtFirstOrderToRk4) {
 
 TEST(Rccm, QuasiStaticIsTheZeroViscosityLimit) {
   // With α → 0 the implicit update tends to min(β, w/E): α = 1e-9 agrees to ~α/Δτ relative.
-  const Rccm viscous(kCn, kCt, kW, 0.3, 1e-9), quasi(kCn, kCt, kW, 0.3, 0.0);
+  const Rccm viscous({kCn, kCt, kW, 0.3, 1e-9}), quasi({kCn, kCt, kW, 0.3, 0.0});
   const LocalVector jump = vec({4e-4, 1e-4, 2e-4});
   EXPECT_NEAR(viscous.update_adhesion(0.9, jump, 1.0), quasi.update_adhesion(0.9, jump, 1.0), 1e-6);
 }
 
 TEST(Rccm, FrictionCoefficientGrowsAsAdhesionIsLost) {
-  const Rccm law(kCn, kCt, kW, 0.6);
+  const Rccm law({kCn, kCt, kW, 0.6});
   for (double beta : {0.0, 0.25, 1.0}) {
     EXPECT_NEAR(law.friction_coefficient(beta), 0.6 * (1.0 - beta), 1e-15); // one rounding
     EXPECT_EQ(law.friction_coefficient_dbeta(beta), -0.6);
@@ -201,8 +201,8 @@ TEST(Rccm, FrictionCoefficientGrowsAsAdhesionIsLost) {
 
 TEST(Rccm, WithoutAdhesionEqualsCoulombSignorini) {
   const double mu = 0.45;
-  const Rccm rccm(kCn, kCt, kW, mu, 0.0, 0.0);
-  const CoulombSignorini cs(mu);
+  const Rccm rccm({kCn, kCt, kW, mu, 0.0, 0.0});
+  const CoulombSignorini cs({mu});
   struct Case {
     LocalVector old_jump, jump, r;
   };

@@ -1,6 +1,8 @@
 // The exact generalized Newton's Jacobian (InterfaceNewtonSystem::add) against central
 // finite differences of its residual, in every regime of the interface law: stick, slip,
-// open, debonding (β = β(jump), α = 0 and viscous), debonding while sliding, β frozen.
+// open, debonding (β = β(jump), α = 0 and viscous), debonding while sliding, β frozen. The
+// sliding cases slide against their friction force (r_t opposite to g_t), as a solution does:
+// there the slip branch's element (contact/laws/interface_law.cpp) is the exact derivative.
 #include "contact/laws/coulomb_signorini.hpp"
 #include "contact/laws/rccm.hpp"
 #include "contact/solver/interface_newton_system.hpp"
@@ -43,17 +45,17 @@ struct Case {
 };
 
 TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
-  auto coulomb = std::make_shared<CoulombSignorini>(0.4);
+  auto coulomb = std::make_shared<CoulombSignorini>(CoulombSignorini::Parameters{0.4});
   // C = 100 kN/m³, w = 0.5 kJ/m²: the bond breaks at E = C‖g‖² > w.
-  auto rccm = std::make_shared<Rccm>(100.0, 100.0, 0.5, 0.4);
-  auto viscous = std::make_shared<Rccm>(100.0, 100.0, 0.5, 0.4, 0.2);
+  auto rccm = std::make_shared<Rccm>(Rccm::Parameters{100.0, 100.0, 0.5, 0.4});
+  auto viscous = std::make_shared<Rccm>(Rccm::Parameters{100.0, 100.0, 0.5, 0.4, 0.2});
   const std::vector<Case> cases = {
       {"stick", coulomb, {-0.01, 0.001}, {10.0, 1.0}, 0.1, ContactStatus::Stick},
-      {"slip", coulomb, {-0.01, 0.02}, {10.0, 8.0}, 0.1, ContactStatus::Slip},
+      {"slip", coulomb, {-0.01, 0.02}, {10.0, -8.0}, 0.1, ContactStatus::Slip},
       {"open", coulomb, {0.02, 0.01}, {-5.0, 0.5}, 0.1, ContactStatus::Open},
       {"rccm_bonded_open", rccm, {0.02, 0.01}, {0.0, 0.0}, 0.1, ContactStatus::Open},
       {"rccm_debonding_open", rccm, {0.1, 0.05}, {0.0, 0.0}, 0.1, ContactStatus::Open, -1, true},
-      {"rccm_debonding_slip", rccm, {-0.01, 0.1}, {10.0, 5.0}, 0.1, ContactStatus::Slip, -1, true},
+      {"rccm_debonding_slip", rccm, {-0.01, 0.1}, {10.0, -5.0}, 0.1, ContactStatus::Slip, -1, true},
       {"rccm_viscous_debonding",
        viscous,
        {0.1, 0.05},
@@ -62,7 +64,7 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
        ContactStatus::Open,
        -1,
        true},
-      {"rccm_beta_frozen_slip", rccm, {-0.01, 0.1}, {10.0, 5.0}, 0.1, ContactStatus::Slip, 0.6},
+      {"rccm_beta_frozen_slip", rccm, {-0.01, 0.1}, {10.0, -5.0}, 0.1, ContactStatus::Slip, 0.6},
   };
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
@@ -126,7 +128,7 @@ TEST(InterfaceNewtonSystem, JacobianMatchesFiniteDifferencesInEveryRegime) {
 // In stick the multiplier rows enforce the jump exactly: ∂F_λ/∂λ = 0 and ∂F_λ/∂x = A ρ ∂ĝ/∂x
 // (no penalty left); in separation λ = 0 is imposed (∂F_λ/∂λ = I, ∂F_λ/∂x = 0).
 TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
-  CoulombSignorini law(0.4);
+  CoulombSignorini law({0.4});
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
   const Interface iface = one_pair();
@@ -159,7 +161,7 @@ TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
 // would be zero. Each row then also fixes its own component: J is regular, and the rest of
 // the rows are those of the stick law.
 TEST(InterfaceNewtonSystem, StuckPairOnPrescribedDofsKeepsTheMatrixRegular) {
-  CoulombSignorini law(0.4);
+  CoulombSignorini law({0.4});
   const DofMap dofs(2, 2);
   const DofDistribution dist(2, 2);
   const Interface iface = one_pair();

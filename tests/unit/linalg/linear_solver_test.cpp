@@ -521,7 +521,7 @@ TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   given.set("method", std::string("gmres"));
   given.set("max_iterations", 7L);
   EXPECT_TRUE(validate(schema, given).empty());
-  const auto o = LinearSolverOptions::from_parameters(given);
+  const LinearSolverOptions o = *schema.fill(given);
   const LinearSolverOptions d;
   EXPECT_EQ(o.method, "gmres");
   EXPECT_EQ(o.max_iterations, 7);

@@ -25,7 +25,7 @@ const double eta_bar = 6 * 0.2 / (std::sqrt(3.0) * 2.8);
 // f* ≈ 5.27 > 0. Face return (de Souza Neto et al. 2008, eq. 8.91):
 // Δγ = f*/(G + K η η̄), p = p* − K η̄ Δγ, s = (1 − G Δγ/√J2*) s*; here G Δγ ≈ 4.1 < √J2*.
 TEST(DruckerPrager, ConeReturnAndNonAssociatedFlow) {
-  DruckerPrager m(E, nu, c, phi, psi);
+  DruckerPrager m({E, nu, c, phi, psi});
   const Vec3 t(-20, -50, -150);
   const double p = t.sum() / 3, j = std::sqrt(0.5 * (t.array() - p).square().sum());
   const double f = j + eta * p - xi * c;
@@ -46,14 +46,14 @@ TEST(DruckerPrager, ConeReturnAndNonAssociatedFlow) {
 // Trial (40, 35, 30): p* = 35, √J2* = 5, Δγ = f*/(G + K η η̄) gives G Δγ ≈ 13 > 5: apex,
 // σ = ξ c/η I = c cot φ I = 10√3 I.
 TEST(DruckerPrager, ApexReturn) {
-  DruckerPrager m(E, nu, c, phi, psi);
+  DruckerPrager m({E, nu, c, phi, psi});
   expect_return(m, Vec3(40, 35, 30), Vec3::Constant(10 * std::sqrt(3.0)), DruckerPrager::Apex);
-  expect_return(DruckerPrager(E, nu, c, phi, 0.0), Vec3(40, 35, 30),
+  expect_return(DruckerPrager({E, nu, c, phi, 0.0}), Vec3(40, 35, 30),
                 Vec3::Constant(10 * std::sqrt(3.0)), DruckerPrager::Apex);
 }
 
 TEST(DruckerPrager, ConsistentTangent) {
-  DruckerPrager m(E, nu, c, phi, psi);
+  DruckerPrager m({E, nu, c, phi, psi});
   expect_fd_tangent(m, Vec3(-20, -50, -150), DruckerPrager::Cone);
   expect_fd_tangent(m, Vec3(40, 35, 30), DruckerPrager::Apex);
   expect_fd_tangent(m, Vec3(-90, -100, -110), DruckerPrager::Elastic);
@@ -65,8 +65,8 @@ TEST(DruckerPrager, ConsistentTangent) {
 // extension the same σ1 on one axis.
 TEST(DruckerPrager, ConeMatchesMohrCoulombMeridians) {
   const double s3 = -100, s1 = (2 * c * std::cos(M_PI / 6) + s3 * 0.5) / 1.5;
-  const DruckerPrager comp(E, nu, c, phi, phi, DruckerPrager::Match::Compression);
-  const DruckerPrager ext(E, nu, c, phi, phi, DruckerPrager::Match::Extension);
+  const DruckerPrager comp({E, nu, c, phi, phi, DruckerPrager::Match::Compression});
+  const DruckerPrager ext({E, nu, c, phi, phi, DruckerPrager::Match::Extension});
   EXPECT_NEAR(comp.yield_function(Vec3(s1, s1, s3).asDiagonal().toDenseMatrix(), 0), 0,
               1e-12 * 100);
   EXPECT_NEAR(ext.yield_function(Vec3(s1, s3, s3).asDiagonal().toDenseMatrix(), 0), 0, 1e-12 * 100);
@@ -80,7 +80,7 @@ TEST(DruckerPrager, ConeMatchesMohrCoulombMeridians) {
 // in-plane principal stresses (centre p + √J2 η/3, radius τ) satisfy Mohr–Coulomb,
 // (σ1 − σ3) + (σ1 + σ3) sin φ = 2c cos φ: the defining property of the match.
 TEST(DruckerPrager, PlaneStrainMatchGivesMohrCoulombPlaneStrainStrength) {
-  const DruckerPrager m(E, nu, c, phi, phi, DruckerPrager::Match::PlaneStrain);
+  const DruckerPrager m({E, nu, c, phi, phi, DruckerPrager::Match::PlaneStrain});
   const double t = std::tan(M_PI / 6), eta_ps = 3 * t / std::sqrt(9 + 12 * t * t);
   Voigt sigma0(4), rate(4), s;
   sigma0 << -100, -100, -100, 0;

@@ -15,7 +15,7 @@ constexpr double tol = 1e-12;
 
 TEST(LinearElastic, UniaxialStressGivesYoungsModulusAndPoisson3D) {
   const double E = 3.0e4, nu = 0.33;
-  LinearElastic m(E, nu);
+  LinearElastic m({E, nu});
   // Strain state of uniaxial stress sigma_xx = s: eps_xx = s/E, eps_yy = eps_zz = -nu s/E.
   const double s = 120.0;
   Voigt eps = Voigt::Zero(6);
@@ -30,7 +30,7 @@ TEST(LinearElastic, UniaxialStressGivesYoungsModulusAndPoisson3D) {
 
 TEST(LinearElastic, PureShearGivesShearModulus) {
   const double E = 2.1e8, nu = 0.3, G = E / (2 * (1 + nu));
-  LinearElastic m(E, nu);
+  LinearElastic m({E, nu});
   for (int n : {4, 6}) {
     Voigt eps = Voigt::Zero(n);
     eps(3) = 1e-3; // engineering shear strain gamma_xy
@@ -44,7 +44,7 @@ TEST(LinearElastic, PureShearGivesShearModulus) {
 
 TEST(LinearElastic, PlaneStrainOutOfPlaneStressIsNuTimesInPlaneSum) {
   const double E = 1.0e5, nu = 0.25;
-  LinearElastic m(E, nu);
+  LinearElastic m({E, nu});
   Voigt eps = Voigt::Zero(4);
   eps << 1e-3, -2e-4, 0.0, 0.0;
   Voigt sig;
@@ -56,7 +56,7 @@ TEST(LinearElastic, PlaneStrainOutOfPlaneStressIsNuTimesInPlaneSum) {
 
 TEST(LinearElastic, BulkModulusUnderHydrostaticStrain) {
   const double E = 5.0e4, nu = 0.2, K = E / (3 * (1 - 2 * nu));
-  LinearElastic m(E, nu);
+  LinearElastic m({E, nu});
   Voigt eps = Voigt::Zero(6);
   eps << 1e-4, 1e-4, 1e-4, 0, 0, 0;
   Voigt sig;

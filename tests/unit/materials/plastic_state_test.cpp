@@ -17,10 +17,12 @@ namespace {
 
 std::vector<std::unique_ptr<ElastoPlastic>> all_plastic() {
   std::vector<std::unique_ptr<ElastoPlastic>> v;
-  v.push_back(std::make_unique<VonMises>(2.5e4, 0.25, 30.0, 500.0));
-  v.push_back(std::make_unique<Tresca>(2.5e4, 0.25, 15.0, 500.0));
-  v.push_back(std::make_unique<MohrCoulomb>(2.5e4, 0.25, 10.0, 30.0, 10.0, 5.0));
-  v.push_back(std::make_unique<DruckerPrager>(2.5e4, 0.25, 10.0, 30.0, 10.0));
+  v.push_back(std::make_unique<VonMises>(VonMises::Parameters{2.5e4, 0.25, 30.0, 500.0}));
+  v.push_back(std::make_unique<Tresca>(Tresca::Parameters{2.5e4, 0.25, 15.0, 500.0}));
+  v.push_back(
+      std::make_unique<MohrCoulomb>(MohrCoulomb::Parameters{2.5e4, 0.25, 10.0, 30.0, 10.0, 5.0}));
+  v.push_back(
+      std::make_unique<DruckerPrager>(DruckerPrager::Parameters{2.5e4, 0.25, 10.0, 30.0, 10.0}));
   return v;
 }
 
@@ -66,8 +68,10 @@ TEST(PlasticState, RandomTrialsReturnOntoTheSurface) {
   std::mt19937 rng(7);
   std::normal_distribution<double> normal(0.0, 100.0);
   auto materials = all_plastic();
-  materials.push_back(std::make_unique<MohrCoulomb>(2.5e4, 0.25, 10.0, 30.0, 0.0));
-  materials.push_back(std::make_unique<MohrCoulomb>(2.5e4, 0.3, 0.0, 35.0, 5.0, 0.0));
+  materials.push_back(
+      std::make_unique<MohrCoulomb>(MohrCoulomb::Parameters{2.5e4, 0.25, 10.0, 30.0, 0.0}));
+  materials.push_back(
+      std::make_unique<MohrCoulomb>(MohrCoulomb::Parameters{2.5e4, 0.3, 0.0, 35.0, 5.0, 0.0}));
   for (const auto& m : materials) {
     int plastic = 0;
     for (int k = 0; k < 4000; ++k) {

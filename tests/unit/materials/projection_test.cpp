@@ -71,10 +71,10 @@ double worst_ratio(const ElastoPlastic& m, double centre, double strength) {
 
 TEST(AssociatedReturn, IsNonExpansiveInTheEnergyNorm) {
   const double c = 10.0; // kPa; the Mohr–Coulomb and Drucker–Prager apex is at c cot φ
-  const MohrCoulomb mc(E, nu, c, 30.0, 30.0), mc_cut(E, nu, c, 30.0, 30.0, 5.0);
-  const DruckerPrager dp(E, nu, c, 30.0, 30.0);
-  const Tresca tresca(E, nu, c);
-  const VonMises vm(E, nu, std::sqrt(3.0) * c);
+  const MohrCoulomb mc({E, nu, c, 30.0, 30.0}), mc_cut({E, nu, c, 30.0, 30.0, 5.0});
+  const DruckerPrager dp({E, nu, c, 30.0, 30.0});
+  const Tresca tresca({E, nu, c});
+  const VonMises vm({E, nu, std::sqrt(3.0) * c});
   const double apex = c * std::sqrt(3.0);
   // Round-off of the returns (stresses of about 100 kPa, differences down to 1e-5 kPa).
   const double tol = 1.0 + 1e-6;

@@ -20,7 +20,7 @@ constexpr double E = 2.5e4, nu = 0.25, c = 10.0, H = 1000.0;
 // Trial (10, −5, −30): f = 40 − 20 = 20, Δλ = 20/(4e4 + 4H), σ = t − 2e4 Δλ n1
 // ≈ (0.91, −5, −20.91): σ1 − σ3 = 2(c + 2H Δλ), the hardened strength.
 TEST(Tresca, PlaneReturnWithHardening) {
-  Tresca m(E, nu, c, H);
+  Tresca m({E, nu, c, H});
   const Vec3 t(10, -5, -30), n1(1, 0, -1);
   const double dl = 20.0 / (4e4 + 4 * H);
   expect_return(m, t, t - 2e4 * dl * n1, Tresca::Plane);
@@ -29,7 +29,7 @@ TEST(Tresca, PlaneReturnWithHardening) {
 // Trial (10, 8, −30): the plane return gives σ1 < σ2; left edge, M = [[4e4 + 4H, 2e4 + 4H],
 // [2e4 + 4H, 4e4 + 4H]], rhs (20, 18). Trial (10, −28, −30): right edge, rhs (20, 18).
 TEST(Tresca, EdgeReturns) {
-  Tresca m(E, nu, c, H);
+  Tresca m({E, nu, c, H});
   const Vec3 n1(1, 0, -1), n2(0, 1, -1), n3(1, -1, 0);
   const double a = 4e4 + 4 * H, b = 2e4 + 4 * H;
   {
@@ -47,7 +47,7 @@ TEST(Tresca, EdgeReturns) {
 // Simple shear γ (3D and plane strain): τ = G γ up to c, then τ = c + H γp with
 // γ = τ/G + γp, i.e. τ = (c + H γ)/(1 + H/G); κ = γp.
 TEST(Tresca, SimpleShearHardeningCurve) {
-  Tresca m(E, nu, c, H);
+  Tresca m({E, nu, c, H});
   const double G = 1e4;
   for (int n : {4, 6}) {
     std::vector<double> state(ElastoPlastic::state_size, 0.0), next(state);
@@ -67,7 +67,7 @@ TEST(Tresca, SimpleShearHardeningCurve) {
 }
 
 TEST(Tresca, ConsistentTangentInEveryBranch) {
-  Tresca m(E, nu, c, H);
+  Tresca m({E, nu, c, H});
   expect_fd_tangent(m, Vec3(10, -5, -30), Tresca::Plane);
   expect_fd_tangent(m, Vec3(10, 8, -30), Tresca::EdgeLeft);
   expect_fd_tangent(m, Vec3(10, -28, -30), Tresca::EdgeRight);

@@ -60,13 +60,13 @@ const double q_peak = 2 * (c * std::cos(phi * M_PI / 180) + pc * sphi) / (1 - sp
 const double dilatancy = 6 * spsi / (3 - spsi);
 
 TEST(Triaxial, MohrCoulombPeakAndDilatancy) {
-  const Triaxial t = run(MohrCoulomb(E, nu, c, phi, psi));
+  const Triaxial t = run(MohrCoulomb({E, nu, c, phi, psi}));
   EXPECT_NEAR(t.q, q_peak, 1e-8 * q_peak);
   EXPECT_NEAR(t.ratio, dilatancy, 1e-8 * dilatancy);
 }
 
 TEST(Triaxial, DruckerPragerPeakAndDilatancy) {
-  const Triaxial t = run(DruckerPrager(E, nu, c, phi, psi));
+  const Triaxial t = run(DruckerPrager({E, nu, c, phi, psi}));
   EXPECT_NEAR(t.q, q_peak, 1e-8 * q_peak);
   EXPECT_NEAR(t.ratio, dilatancy, 1e-8 * dilatancy);
 }

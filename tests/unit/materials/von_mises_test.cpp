@@ -20,7 +20,7 @@ constexpr double E = 2.0e5, nu = 0.3, sy = 250.0, H = 1.0e4;
 // σ = σ_y + E H/(E + H) (ε − σ_y/E), and the equivalent plastic strain is εp = (σ − σ_y)/H.
 // Newton stops at a stress residual of 1e-13 relative, so 1e-10 is round-off plus margin.
 TEST(VonMises, UniaxialHardeningCurveMatchesClosedForm) {
-  VonMises m(E, nu, sy, H);
+  VonMises m({E, nu, sy, H});
   for (int n : {4, 6}) {
     std::vector<bool> controlled(n, false);
     controlled[1] = controlled[2] = true; // σ_yy = σ_zz = 0 (in 2D: axisymmetric-like control)
@@ -45,7 +45,7 @@ TEST(VonMises, UniaxialHardeningCurveMatchesClosedForm) {
 // trial σ_xy = 20 + G γ, q_trial = √3 |σ_xy|, Δγ = (q_trial − σ_y)/(3G + H) and the
 // returned total shear is σ_xy (1 − 3G Δγ/q_trial); the hydrostatic part is untouched.
 TEST(VonMises, RadialReturnInSimpleShearWithInitialStress) {
-  VonMises m(E, nu, sy, H);
+  VonMises m({E, nu, sy, H});
   const double G = E / (2 * (1 + nu)), gamma = 5e-3;
   const double tr = 20 + G * gamma, q = std::sqrt(3.0) * tr;
   const double dg = (q - sy) / (3 * G + H);
@@ -72,7 +72,7 @@ TEST(VonMises, RadialReturnInSimpleShearWithInitialStress) {
 // The consistent tangent against central differences (step 1e-8 on strains ~1e-3: truncation
 // ~1e-10, round-off ~1e-9 relative), from a hardened state, in 2D and 3D, elastic and plastic.
 TEST(VonMises, ConsistentTangentMatchesFiniteDifferences) {
-  VonMises m(E, nu, sy, H);
+  VonMises m({E, nu, sy, H});
   for (int n : {4, 6}) {
     Voigt e1(n), sigma0 = Voigt::Zero(n);
     if (n == 4)
@@ -98,7 +98,7 @@ TEST(VonMises, ConsistentTangentMatchesFiniteDifferences) {
 // Purity: update() never writes old_state; the state advances only when the caller copies
 // new_state, so repeating an update from the same old state gives the same result.
 TEST(VonMises, OldStateIsNeverWritten) {
-  VonMises m(E, nu, sy, H);
+  VonMises m({E, nu, sy, H});
   Voigt strain(6), sigma0 = Voigt::Zero(6);
   strain << 3e-3, -1e-3, -1e-3, 2e-3, 0, 0;
   std::vector<double> old(ElastoPlastic::state_size, 0.0), copy = old, n1(old.size()),
