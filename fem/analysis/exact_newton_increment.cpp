@@ -175,7 +175,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     // constraint_tolerance(). Weighted as a force relative to the reference instead (before),
     // the constraint, whose linearisation is poor where pairs cross β's kink, dominated the
     // merit and the line search cut steps that reduced the forces: on rccm_traced.yaml with
-    // 100, 120 or 160 increments single traced steps took 14 to 20 iterations (6 now).
+    // 100, 120 or 160 increments single traced steps took 14 to 20 iterations (5 now).
     const double g_weight =
         path ? copt.tolerance * reference / path->constraint_tolerance(copt.tolerance) : 0.0;
     auto residual = [&](const Eigen::VectorXd& at, Eigen::VectorXd& out,

@@ -123,7 +123,7 @@ TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
 // The shipped input with shorter dissipation steps, at the shipped tolerance: each traced step
 // converges in a few Newton iterations, not only on average. With the constraint held to the
 // solver tolerance and weighted like a force in the line search's merit, single steps took
-// 17 (100 increments) and 20 (120) iterations; 6 with the constraint held to √tolerance and
+// 17 (100 increments) and 20 (120) iterations; 5 with the constraint held to √tolerance and
 // weighted by it (docs/theory.md, "Path-following"). A ramp increment that fails into
 // dissipation control costs at most PathControl::slow_iterations solves (it took the contact
 // solver's 50 before).
