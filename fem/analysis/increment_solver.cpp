@@ -23,8 +23,9 @@ double StaticAnalysis::Impl::residual_norm(const std::vector<double>& trial, dou
 
 // Newton (and, for bipotential_uzawa, Uzawa) iterations of one increment ending at stage
 // load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
-bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log) {
-  if (newton_system) return solve_increment_exact(lambda, dtau, log);
+bool StaticAnalysis::Impl::solve_increment(double lambda, double dtau, IncrementLog& log,
+                                           int exact_iterations) {
+  if (newton_system) return solve_increment_exact(lambda, dtau, log, nullptr, exact_iterations);
   const NonlinearSolverOptions& copt = model.contact_solver;
   const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
   const double tolerance = has_contact ? copt.tolerance : options.residual_tolerance;

@@ -71,9 +71,13 @@ bool PathControl::forward(const PathStep& step) const {
   return step.kind != PathStep::Kind::ArcLength || step.x.dot(x_prev_) > 0;
 }
 
+bool PathControl::can_switch() const {
+  return stage_.control.type == "dissipation" && mode_ == Mode::Ramp && !finished_ &&
+         capacity_ > 0 && x_prev_.size() != 0;
+}
+
 bool PathControl::switch_on_failure() {
-  if (stage_.control.type != "dissipation" || mode_ != Mode::Ramp || finished_) return false;
-  if (!(capacity_ > 0) || x_prev_.size() == 0) return false;
+  if (!can_switch()) return false;
   mode_ = Mode::Dissipation;
   return true;
 }
@@ -89,7 +93,7 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
   // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
   // dissipation step never grows beyond the one asked for).
-  const double adapt = iterations <= 3 ? 1.5 : iterations >= 8 ? 0.6 : 1.0;
+  const double adapt = iterations <= 3 ? 1.5 : iterations >= slow_iterations ? 0.6 : 1.0;
   if (mode_ == Mode::ArcLength) {
     length_ = std::min(4.0 * length0_, adapt * step_->length);
   } else if (mode_ == Mode::Dissipation) {

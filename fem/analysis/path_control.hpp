@@ -43,6 +43,14 @@ public:
   /// A ramp increment failed: true if dissipation control takes over (the stage asks for
   /// it, an interface has adhesion left, and an earlier increment gives a direction).
   bool switch_on_failure();
+  /// The Newton iterations a ramp increment gets (0: the contact solver's own limit). Where a
+  /// failure would hand over to dissipation control, a ramp increment slower than one that
+  /// makes a traced step shrink (slow_iterations) fails: the ramp that cannot follow a
+  /// softening interface used up all 50 iterations before, twice on rccm_traced.yaml (100 of
+  /// its 341 linear solves).
+  int ramp_iterations() const { return can_switch() ? slow_iterations : 0; }
+  /// Newton iterations from which a step counts as slow: the next traced step is shorter.
+  static constexpr int slow_iterations = 8;
   /// A converged increment from u_begin to u of Δλ in `iterations`: its dissipation, the
   /// next step's length and the control of the next increment.
   void end_increment(const std::vector<double>& u, const std::vector<double>& u_begin,
@@ -59,6 +67,8 @@ public:
 private:
   enum class Mode { Ramp, ArcLength, Dissipation };
   Eigen::VectorXd on_interface(const std::vector<double>& u) const;
+  /// A failed ramp increment would hand over to dissipation control.
+  bool can_switch() const;
   /// Σ A w(β): what adhesion loss can still dissipate (kJ), at the committed β.
   double adhesion_capacity() const;
 

@@ -166,7 +166,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         if (last_size > 0)
           for (std::size_t i = 0; i < u.size(); ++i)
             u[i] += extrapolation * (u[i] - u_before_last[i]);
-        bool converged = solve_increment(lambda, dtau, log);
+        bool converged = solve_increment(lambda, dtau, log, path.ramp_iterations());
         bool beta_can_change = false;
         if (!converged && path.switch_on_failure()) {
           // A ramp that cannot follow a softening interface: dissipation control from here.
