@@ -146,6 +146,7 @@ void SolidAssembler::loop(
 void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& constraints,
                               SparseMatrix* K, DistributedVector& R, SparseMatrix* removed) {
   std::vector<double> kept;
+  std::vector<char> held;
   loop(u, true,
        [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
          for (auto& v : f_e)
@@ -154,16 +155,19 @@ void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& c
          const int nd = static_cast<int>(cell_dofs.size());
          if (removed) {
            // What the elimination takes out of K_e: entries in a constrained row or column.
-           kept.assign(K_e.size(), 0.0);
+           held.resize(nd);
            bool any = false;
-           for (int a = 0; a < nd; ++a)
-             for (int b = 0; b < nd; ++b)
-               if (constraints.is_constrained(cell_dofs[a]) ||
-                   constraints.is_constrained(cell_dofs[b])) {
-                 kept[a * nd + b] = K_e[a * nd + b];
-                 any = true;
-               }
-           if (any) removed->add_dense(cell_dofs.data(), nd, kept.data());
+           for (int a = 0; a < nd; ++a) {
+             held[a] = constraints.is_constrained(cell_dofs[a]);
+             any = any || held[a];
+           }
+           if (any) {
+             kept.assign(K_e.size(), 0.0);
+             for (int a = 0; a < nd; ++a)
+               for (int b = 0; b < nd; ++b)
+                 if (held[a] || held[b]) kept[a * nd + b] = K_e[a * nd + b];
+             removed->add_dense(cell_dofs.data(), nd, kept.data());
+           }
          }
          constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
          if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());
