@@ -51,7 +51,7 @@ ParamSchemaOf<DruckerPrager::Parameters> DruckerPrager::schema() {
             {"plane_strain", Match::PlaneStrain}},
            "which Mohr-Coulomb condition the cone reproduces: its compression meridian (outer "
            "cone), extension meridian (inner cone) or plane-strain strength")
-      .with_default(std::string("compression"));
+      .defaulted();
   add_unit_weight_key(s);
   return s;
 }

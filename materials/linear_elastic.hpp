@@ -26,7 +26,7 @@ template <class P> void add_hooke_keys(ParamSchemaOf<P>& s) {
 template <class P> void add_unit_weight_key(ParamSchemaOf<P>& s) {
   s.real("unit_weight", &P::unit_weight, "kN/m^3", "weight per unit volume, used by gravity loads")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
 }
 
 class LinearElastic : public Material {

@@ -17,7 +17,7 @@ ParamSchemaOf<Tresca::Parameters> Tresca::schema() {
   s.real("hardening_modulus", &P::hardening_modulus, "kPa",
          "linear hardening H of the shear strength c + H * gamma_p (plastic shear strain)")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   add_unit_weight_key(s);
   return s;
 }

@@ -25,7 +25,7 @@ ParamSchemaOf<VonMises::Parameters> VonMises::schema() {
          "linear isotropic hardening modulus H: yield stress sigma_y + H * (equivalent plastic "
          "strain)")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   add_unit_weight_key(s);
   return s;
 }

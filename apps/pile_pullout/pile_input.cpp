@@ -34,30 +34,30 @@ ParamSchemaOf<MeshDensity> mesh_schema() {
                              "the toe (r < D/2 and r > D/2)");
   s.string("cell", &M::cell, "element type (the seed used 3-node triangles)")
       .one_of({"tri3", "tri6", "quad4", "quad8"})
-      .with_default(std::string("tri3"));
+      .defaulted();
   s.integer("pile_radial_cells", &M::pile_radial_cells, "cells across the pile radius")
       .at_least(1)
-      .with_default(3L);
-  s.integer("shaft_cells", &M::shaft_cells, "cells along the shaft").at_least(2).with_default(52L);
+      .defaulted();
+  s.integer("shaft_cells", &M::shaft_cells, "cells along the shaft").at_least(2).defaulted();
   s.real("shaft_growth", &M::shaft_growth, "",
          "size ratio of consecutive cells along the shaft going down "
          "(< 1 refines toward the toe)")
       .positive()
-      .with_default(1.0);
+      .defaulted();
   s.integer("soil_radial_cells", &M::soil_radial_cells, "cells from the shaft to soil_radius")
       .at_least(1)
-      .with_default(30L);
+      .defaulted();
   s.real("radial_growth", &M::radial_growth, "",
          "size ratio of consecutive soil cells going away from the shaft")
       .positive()
-      .with_default(1.15);
+      .defaulted();
   s.integer("below_toe_cells", &M::below_toe_cells, "cells from the toe to the bottom")
       .at_least(1)
-      .with_default(20L);
+      .defaulted();
   s.real("below_toe_growth", &M::below_toe_growth, "",
          "size ratio of consecutive cells going down from the toe")
       .positive()
-      .with_default(1.15);
+      .defaulted();
   return s;
 }
 
@@ -80,9 +80,7 @@ ParamSchemaOf<InstallationStage> installation_schema() {
   s.real("radial_displacement", &I::radial_displacement, "m",
          "radial displacement of the shaft into the soil")
       .non_negative();
-  s.integer("increments", &I::increments, "load increments of the stage")
-      .at_least(1)
-      .with_default(4L);
+  s.integer("increments", &I::increments, "load increments of the stage").at_least(1).defaulted();
   return s;
 }
 
@@ -96,14 +94,14 @@ ParamSchemaOf<PulloutStage> pullout_schema() {
   s.real("duration", &P::duration, "s",
          "pseudo-time of the stage (matters for a viscous RCCM interface only)")
       .positive()
-      .with_default(1.0);
+      .defaulted();
   s.string("control", &P::control,
            "how the head displacement advances: ramp (equal increments), "
            "dissipation (ramp, then steps of equal energy released by adhesion loss "
            "through the debonding snap-back) or arc_length (steps of equal interface "
            "displacement); docs/theory.md")
       .one_of({"ramp", "dissipation", "arc_length"})
-      .with_default(std::string("ramp"));
+      .defaulted();
   // Optional without a default value: the analysis derives them (PathControl).
   s.real("dissipation_step", &P::dissipation_step, "kJ",
          "energy released by adhesion loss per traced step (control: dissipation); default: "

@@ -8,7 +8,7 @@ ParamSchemaOf<CoulombSignorini::Parameters> CoulombSignorini::schema() {
   s.real("friction_coefficient", &Parameters::friction_coefficient, "",
          "Coulomb friction coefficient mu (0 = frictionless)")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   return s;
 }
 

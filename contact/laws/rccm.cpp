@@ -23,16 +23,16 @@ ParamSchemaOf<Rccm::Parameters> Rccm::schema() {
   s.real("friction_coefficient", &P::friction_coefficient, "",
          "Coulomb friction coefficient mu once debonded (mu_bar = mu (1 - beta))")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   s.real("adhesion_viscosity", &P::adhesion_viscosity, "kN*s/m",
          "adhesion viscosity alpha (0 = quasi-static limit)")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   s.real("initial_adhesion", &P::initial_adhesion, "",
          "initial adhesion intensity beta0 (1 = sound, 0 = debonded)")
       .at_least(0.0)
       .at_most(1.0)
-      .with_default(1.0);
+      .defaulted();
   return s;
 }
 

@@ -11,7 +11,7 @@ void common_keys(ParamSchemaOf<Options>& s, double default_factor) {
          "augmentation parameter rho of the projection; 0 = automatic per pair: the larger of "
          "the law's stiffness and the bodies' local stiffness 1/W_ii at the pair")
       .non_negative()
-      .with_default(0.0);
+      .defaulted();
   s.real("augmentation_factor", &Options::augmentation_factor, "", "multiplies the automatic rho")
       .positive()
       .with_default(default_factor);
@@ -24,14 +24,14 @@ void common_keys(ParamSchemaOf<Options>& s, double default_factor) {
       .less_than(1.0)
       .because("below 1e-14 (about 50 machine epsilons) a relative residual is the round-off of "
                "the sums that form it, which no solver can reduce")
-      .with_default(1e-8);
+      .defaulted();
   s.integer("max_cutbacks", &Options::max_cutbacks,
             "halvings of a non-converging increment before the run stops")
       .at_least(0)
-      .with_default(6L);
+      .defaulted();
   s.boolean("line_search", &Options::line_search,
             "backtracking line search on the residual norm (globalisation)")
-      .with_default(true);
+      .defaulted();
 }
 
 // max_iterations, and max_outer_iterations for the solvers with a multiplier loop

@@ -4,6 +4,8 @@
 /// member:
 ///   ParamSchemaOf<Parameters> s("rccm", "...");
 ///   s.real("normal_stiffness", &Parameters::normal_stiffness, "kN/m^3", "...").positive();
+///   s.real("friction_coefficient", &Parameters::friction_coefficient, "", "...").defaulted();
+/// (defaulted(): the member's initializer is the default, so each value is written once.)
 /// The untyped ParamSchema it derives from still serves the input checker, --describe and
 /// the generated docs; the bindings fill P from a validated ParameterSet (fill) and write P
 /// back as one (to_parameters), so no key string is written twice. Checked<P> is a P that
@@ -110,6 +112,8 @@ public:
     for (const auto& n : names)
       allowed.push_back(n.first);
     ParamSpec& spec = ParamSchema::string(key, doc).one_of(std::move(allowed));
+    for (const auto& n : names)
+      if (n.second == P{}.*m) spec.member_initial = n.first;
     binders_->push_back({key,
                          [key, m, names](const ParameterSet& s, P& p) {
                            const std::string& v = s.string(key);
@@ -201,6 +205,7 @@ private:
     } else {
       using Traits = detail::ParamTraits<T>;
       static_assert(Traits::type == K, "the member's type does not match the key's");
+      spec.member_initial = Traits::write(P{}.*m);
       binders_->push_back(
           {key, [key, m](const ParameterSet& s, P& p) { p.*m = Traits::read(s, key); },
            [key, m](const P& p, ParameterSet& s) { s.set(key, Traits::write(p.*m)); }});

@@ -1,5 +1,7 @@
 #include "fem/core/parameter_schema.hpp"
 
+#include <stdexcept>
+
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
 
@@ -39,6 +41,12 @@ ParamSpec& ParamSpec::with_default(ParamValue v) {
   required = false;
   default_value = std::move(v);
   return *this;
+}
+ParamSpec& ParamSpec::defaulted() {
+  if (!member_initial)
+    throw std::logic_error("parameter '" + name +
+                           "': defaulted() needs a bound, non-optional member");
+  return with_default(*member_initial);
 }
 ParamSpec& ParamSpec::optional() {
   required = false;

@@ -29,6 +29,9 @@ struct ParamSpec {
   std::string doc;
   bool required = true;
   std::optional<ParamValue> default_value;
+  /// The initial value of the struct member a ParamSchemaOf key is bound to (empty for an
+  /// unbound key or an optional member): what defaulted() makes the default.
+  std::optional<ParamValue> member_initial;
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();
   bool lower_open = true; ///< the bound itself is excluded (always true for an infinite bound)
@@ -37,6 +40,9 @@ struct ParamSpec {
   std::string range_reason;         ///< why the range is what it is, for the message ("" = none)
 
   ParamSpec& with_default(ParamValue v);
+  /// The default is the bound member's initial value (ParamSchemaOf keys): written once, in
+  /// the parameters struct. Throws std::logic_error for a key without one.
+  ParamSpec& defaulted();
   /// Not required and without default: an absent key turns a feature off
   /// (ParameterSet::has tells).
   ParamSpec& optional();

@@ -6,52 +6,51 @@ namespace bipot {
 
 ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
   using O = LinearSolverOptions;
-  const O d;
   ParamSchemaOf<O> s("linear_solver",
                      "Solver for the linear systems of each Newton/Uzawa iteration");
   s.string("method", &O::method,
            "Krylov method (cg for symmetric positive definite systems, gmres "
            "otherwise) or a direct sparse LU factorisation (see `factorization`)")
       .one_of({"cg", "gmres", "direct"})
-      .with_default(d.method);
+      .defaulted();
   s.string("preconditioner", &O::preconditioner,
            "muelu: smoothed-aggregation algebraic multigrid; lu: the sparse LU of an "
            "earlier matrix, refactorised as `lu_refresh` says (for Newton iterations that "
            "change only a few rows, as contact ones do); ilu: incomplete LU(0) per rank; "
            "jacobi: diagonal scaling; none")
       .one_of({"muelu", "lu", "ilu", "jacobi", "none"})
-      .with_default(d.preconditioner);
+      .defaulted();
   s.real("tolerance", &O::tolerance, "",
          "Relative residual ||b - A x|| / ||b|| at which iterations stop")
       .greater_than(0.0)
       .less_than(1.0)
-      .with_default(d.tolerance);
+      .defaulted();
   s.integer("max_iterations", &O::max_iterations,
             "Maximum number of Krylov iterations (restarts included)")
       .at_least(1)
-      .with_default(static_cast<long>(d.max_iterations));
+      .defaulted();
   s.integer("restart", &O::restart, "GMRES: Krylov subspace size before a restart")
       .at_least(1)
-      .with_default(static_cast<long>(d.restart));
+      .defaulted();
   s.integer("amg_coarse_size", &O::amg_coarse_size,
             "MueLu: coarsening stops below this many rows; the coarsest "
             "level is solved directly")
       .at_least(1)
-      .with_default(static_cast<long>(d.amg_coarse_size));
+      .defaulted();
   s.string("factorization", &O::factorization,
            "Sparse LU package for method `direct` and preconditioner `lu`, on the matrix "
            "gathered on rank 0. mumps: multifrontal (MUMPS), analysis and factorisation 3 "
            "times faster than klu2 at 78k DOFs and 10 times at 306k (docs/performance.md); "
            "klu2: Amesos2's left-looking LU")
       .one_of({"mumps", "klu2"})
-      .with_default(d.factorization);
+      .defaulted();
   s.integer("lu_refresh", &O::lu_refresh,
             "lu: GMRES iterations, in all since the last factorisation, after "
             "which the current matrix is factorised; 0 = automatic: once the "
             "GMRES time on the old factors equals the time of one factorisation")
       .at_least(0)
-      .with_default(static_cast<long>(d.lu_refresh));
-  s.boolean("verbose", &O::verbose, "Print the Krylov convergence history").with_default(d.verbose);
+      .defaulted();
+  s.boolean("verbose", &O::verbose, "Print the Krylov convergence history").defaulted();
   s.rule("preconditioner",
          "preconditioner `lu` needs method `gmres`: old LU factors are a nonsymmetric "
          "preconditioner, on which CG breaks down (and `direct` takes no preconditioner)",

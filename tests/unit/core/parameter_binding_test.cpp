@@ -26,15 +26,15 @@ struct Sample {
 ParamSchemaOf<Sample> sample_schema() {
   ParamSchemaOf<Sample> s("sample", "a struct with one member of every kind");
   s.real("stiffness", &Sample::stiffness, "kPa", "required, > 0").positive();
-  s.real("ratio", &Sample::ratio, "", "[0, 1]").at_least(0.0).at_most(1.0).with_default(0.25);
+  s.real("ratio", &Sample::ratio, "", "[0, 1]").at_least(0.0).at_most(1.0).defaulted();
   s.real("cutoff", &Sample::cutoff, "kPa", "optional").non_negative();
-  s.integer("count", &Sample::count, "at least 1").at_least(1).with_default(3L);
+  s.integer("count", &Sample::count, "at least 1").at_least(1).defaulted();
   s.integer("big", &Sample::big, "any").with_default(0L);
   s.integer("limit", &Sample::limit, "optional").at_least(0);
-  s.boolean("verbose", &Sample::verbose, "flag").with_default(false);
-  s.string("label", &Sample::label, "free text").with_default(std::string("a"));
+  s.boolean("verbose", &Sample::verbose, "flag").defaulted();
+  s.string("label", &Sample::label, "free text").defaulted();
   s.choice("shape", &Sample::shape, {{"round", Shape::Round}, {"square", Shape::Square}}, "enum")
-      .with_default(std::string("round"));
+      .defaulted();
   s.rule("ratio", "ratio <= 0.5 when shape is square", [](const Sample& p) {
     return p.shape == Shape::Square && p.ratio > 0.5
                ? std::optional<std::string>("value " + format_value(p.ratio) +
@@ -190,6 +190,24 @@ TEST(ParamBinding, RegistryBuildsFromTheFilledStruct) {
   }
   // The reader has validated already: create_validated() does not check a second time.
   EXPECT_EQ(r.create_validated("spring", p)->k, 0.0);
+}
+
+// defaulted() takes the default from the member's initializer (the value is written once, in
+// the struct), for every kind of key; a key with no member value to take refuses it.
+TEST(ParamSchemaOf, DefaultedTakesTheMembersInitialValue) {
+  const ParamSchemaOf<Sample> s = sample_schema();
+  auto default_of = [&](const std::string& key) { return *s.find(key)->default_value; };
+  EXPECT_EQ(std::get<double>(default_of("ratio")), 0.25);
+  EXPECT_EQ(std::get<long>(default_of("count")), 3L);
+  EXPECT_EQ(std::get<bool>(default_of("verbose")), false);
+  EXPECT_EQ(std::get<std::string>(default_of("label")), "a");
+  EXPECT_EQ(std::get<std::string>(default_of("shape")), "round");
+  EXPECT_TRUE(s.find("stiffness")->required);
+  ParamSchemaOf<Sample> other("other", "");
+  EXPECT_THROW(other.real("cutoff", &Sample::cutoff, "kPa", "optional").defaulted(),
+               std::logic_error);
+  ParamSchema untyped("untyped", "");
+  EXPECT_THROW(untyped.real("x", "", "unbound").defaulted(), std::logic_error);
 }
 
 } // namespace
