@@ -25,6 +25,22 @@ ParamSchemaOf<Geometry> geometry_schema() {
   s.real("soil_depth", &G::soil_depth, "m",
          "depth of the soil domain below the surface (> pile_length)")
       .positive();
+  s.rule("soil_radius", "soil_radius > pile_diameter / 2",
+         [](const G& g) -> std::optional<std::string> {
+           if (g.soil_radius > 0.5 * g.pile_diameter) return std::nullopt;
+           return "the soil domain (radius " + format_value(g.soil_radius) +
+                  " m) must extend beyond the pile radius (" + format_value(0.5 * g.pile_diameter) +
+                  " m)";
+         },
+         {"soil_radius", "pile_diameter"});
+  s.rule("soil_depth", "soil_depth > pile_length",
+         [](const G& g) -> std::optional<std::string> {
+           if (g.soil_depth > g.pile_length) return std::nullopt;
+           return "the soil domain (depth " + format_value(g.soil_depth) +
+                  " m) must extend below the pile toe (pile_length " + format_value(g.pile_length) +
+                  " m)";
+         },
+         {"soil_depth", "pile_length"});
   return s;
 }
 
@@ -146,31 +162,6 @@ P read_struct(const YamlMap& parent, const std::string& key, const ParamSchemaOf
   return to_struct(schema, read_section(parent, key, schema, required, doc));
 }
 
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-void check_geometry(const YamlMap& top, const ParameterSet& g, const std::string& file) {
-  // Each check needs both of its values valid (a missing or out-of-range one is reported
-  // already), so it reads the validated keys rather than the struct.
-  const auto ok = [&](const char* a, const char* b) { return g.has(a) && g.has(b); };
-  Diagnostics quiet(file); // the keys were checked by read_section: no second report
-  YamlMap geo(top.node("geometry"), "geometry", quiet, geometry_schema().keys());
-  const auto error = [&](const char* key, const std::string& msg) {
-    top.diag().error_at(geo.where(key), msg);
-  };
-  const double radius = g.has("pile_diameter") ? 0.5 * g.real("pile_diameter") : 0.0;
-  if (ok("pile_diameter", "soil_radius") && !(g.real("soil_radius") > radius))
-    error("soil_radius", "the soil domain (radius " + num(g.real("soil_radius")) +
-                             " m) must extend beyond the pile radius (" + num(radius) + " m)");
-  if (ok("pile_length", "soil_depth") && !(g.real("soil_depth") > g.real("pile_length")))
-    error("soil_depth", "the soil domain (depth " + num(g.real("soil_depth")) +
-                            " m) must extend below the pile toe (pile_length " +
-                            num(g.real("pile_length")) + " m)");
-}
-
 void read_materials(const YamlMap& top, const SchemaIndex& materials, PileSpec& spec) {
   if (!top.has("materials")) {
     top.missing("materials", "pile: {...} and soil: {...}");
@@ -263,7 +254,6 @@ PileSpec parse(const std::string& text, const std::string& file_name,
   const auto geometry = geometry_schema();
   const ParameterSet g = read_section(top, "geometry", geometry, true,
                                       "pile_diameter, pile_length, soil_radius, soil_depth");
-  if (top.has("geometry")) check_geometry(top, g, spec.file);
   spec.geometry = to_struct(geometry, g);
   spec.mesh = read_struct(top, "mesh", mesh_schema(), false, "");
   read_materials(top, catalogue.materials, spec);

@@ -116,6 +116,7 @@ public:
       if (n.second == P{}.*m) spec.member_initial = n.first;
     binders_->push_back({key,
                          [key, m, names](const ParameterSet& s, P& p) {
+                           if (!s.has(key)) return; // a rule's unread key
                            const std::string& v = s.string(key);
                            for (const auto& n : names)
                              if (n.first == v) p.*m = n.second;
@@ -127,14 +128,18 @@ public:
     return spec;
   }
 
-  /// A condition between keys, written on the struct; reported at `key` (see ParamRule).
+  /// A condition between keys, written on the struct; reported at `key` (see ParamRule). With
+  /// `reads` (the keys it depends on) it runs once those are valid, whatever the others; the
+  /// struct's other members then hold what is valid, or their initial values.
   void rule(std::string key, std::string doc,
-            std::function<std::optional<std::string>(const P&)> check) {
+            std::function<std::optional<std::string>(const P&)> check,
+            std::vector<std::string> reads = {}) {
     auto binders = binders_;
     ParamSchema::rule({std::move(key), std::move(doc),
                        [binders, check = std::move(check)](const ParameterSet& s) {
                          return check(read(*binders, s));
-                       }});
+                       },
+                       std::move(reads)});
   }
 
   /// P from parameters already validated against this schema (the input reader's): no second
@@ -207,7 +212,10 @@ private:
       static_assert(Traits::type == K, "the member's type does not match the key's");
       spec.member_initial = Traits::write(P{}.*m);
       binders_->push_back(
-          {key, [key, m](const ParameterSet& s, P& p) { p.*m = Traits::read(s, key); },
+          {key,
+           [key, m](const ParameterSet& s, P& p) {
+             if (s.has(key)) p.*m = Traits::read(s, key); // absent: a rule's unread key
+           },
            [key, m](const P& p, ParameterSet& s) { s.set(key, Traits::write(p.*m)); }});
     }
     return spec;

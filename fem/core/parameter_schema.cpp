@@ -1,5 +1,7 @@
 #include "fem/core/parameter_schema.hpp"
 
+#include <algorithm>
+#include <set>
 #include <stdexcept>
 
 #include "fem/core/error.hpp"
@@ -305,9 +307,21 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
       out.set(spec.name, *spec.default_value);
   }
   given = out;
-  if (problems.empty())
-    for (const auto& rule : schema.rules())
-      if (auto msg = rule.check(given)) problems.push_back({rule.key, *msg});
+  // A rule runs once the keys it reads are valid: all of them, unless it names its own.
+  std::set<std::string> invalid;
+  for (const auto& p : problems)
+    invalid.insert(p.key);
+  std::vector<ParamProblem> broken;
+  for (const auto& rule : schema.rules()) {
+    const bool ready =
+        rule.reads.empty()
+            ? problems.empty()
+            : std::all_of(rule.reads.begin(), rule.reads.end(),
+                          [&](const std::string& k) { return !invalid.count(k) && given.has(k); });
+    if (!ready) continue;
+    if (auto msg = rule.check(given)) broken.push_back({rule.key, *msg});
+  }
+  problems.insert(problems.end(), broken.begin(), broken.end());
   return problems;
 }
 

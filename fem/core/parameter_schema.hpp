@@ -68,11 +68,14 @@ struct ParamSpec {
 class ParameterSet;
 
 /// A condition between keys (e.g. dilatancy angle ≤ friction angle), checked once every key
-/// is valid on its own. `check` returns the problem or nullopt; it is reported at `key`.
+/// is valid on its own — or, when `reads` names the keys it depends on, once those are valid,
+/// so that an input with a problem elsewhere still hears of this one. `check` returns the
+/// problem or nullopt; it is reported at `key`.
 struct ParamRule {
   std::string key;
   std::string doc; ///< the condition in words, for --describe and the docs
   std::function<std::optional<std::string>(const ParameterSet&)> check;
+  std::vector<std::string> reads = {}; ///< the keys `check` reads; empty: all of them
 };
 
 /// The ordered list of keys a named object accepts.

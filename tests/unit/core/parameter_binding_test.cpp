@@ -210,5 +210,37 @@ TEST(ParamSchemaOf, DefaultedTakesTheMembersInitialValue) {
   EXPECT_THROW(untyped.real("x", "", "unbound").defaulted(), std::logic_error);
 }
 
+// A rule that names the keys it reads runs once those are valid, though another key has a
+// problem (both are reported); a rule without `reads` waits until every key is valid.
+TEST(ParamSchemaOf, RuleWithItsKeysRunsDespiteProblemsElsewhere) {
+  struct Box {
+    double low = 0, high = 0, other = 0;
+  };
+  for (const bool named : {true, false}) {
+    ParamSchemaOf<Box> s("box", "");
+    s.real("low", &Box::low, "", "").defaulted();
+    s.real("high", &Box::high, "", "").defaulted();
+    s.real("other", &Box::other, "", "positive").positive();
+    auto check = [](const Box& b) -> std::optional<std::string> {
+      return b.low < b.high ? std::nullopt : std::optional<std::string>("low >= high");
+    };
+    if (named)
+      s.rule("high", "low < high", check, {"low", "high"});
+    else
+      s.rule("high", "low < high", check);
+    ParameterSet given;
+    given.set("low", 2.0);
+    given.set("high", 1.0);
+    given.set("other", -1.0);
+    const auto problems = validate(s, given);
+    ASSERT_EQ(problems.size(), named ? 2u : 1u);
+    EXPECT_EQ(problems[0].key, "other");
+    if (named) {
+      EXPECT_EQ(problems[1].key, "high");
+      EXPECT_EQ(problems[1].message, "low >= high");
+    }
+  }
+}
+
 } // namespace
 } // namespace bipot
