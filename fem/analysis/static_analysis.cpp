@@ -275,10 +275,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       // The stage's energy_tolerance: an increment whose balance breaks the budget is redone
       // in halves before anything of it is committed.
       auto energy_verdict = EnergyStepControl::Verdict::Accept;
+      const EnergyTotals energy_before = energy->totals();
       if (energy_control.active()) {
-        energy_verdict =
-            energy_control.judge(energy->totals(), energy->trial(u, external, internal),
-                                 level < max_cutbacks && !energy_last_resort);
+        energy_verdict = energy_control.judge(energy_before, energy->trial(u, external, internal),
+                                              level < max_cutbacks && !energy_last_resort);
         if (energy_verdict == EnergyStepControl::Verdict::Halve) {
           u = u_begin;
           matrix_ready = false;
@@ -297,15 +297,20 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           continue;
         }
       }
-      path.end_increment(u, u_begin, lambda - done, log.iterations, energy_halvings == 0);
       // Commit after that cell loop at the converged u: generalized_newton's last bulk
       // assembly was at the start of the increment (the rest followed by condensation).
       solid.commit();
       reaction_all = std::move(reactions);
       reaction_scale = reaction.norm2();
-      const EnergyTotals energy_before = energy->totals();
       energy->record(u, external, internal);
       energy_control.accept(energy_before, energy->totals(), energy_verdict);
+      // A step the energy budget shortened, or one whose error leaves no room for a longer
+      // one (traced steps grow by 1.5, the ramp by 2), does not grow.
+      const auto may_grow = [&](double growth) {
+        return energy_halvings == 0 &&
+               energy_control.may_grow(energy_before, energy->totals(), growth);
+      };
+      path.end_increment(u, u_begin, lambda - done, log.iterations, may_grow(1.5));
       for (const auto& ia : interfaces)
         ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
@@ -371,9 +376,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       done = lambda;
       if (rep.traced)
         level = 0; // the path control keeps the step that converged
-      else if (level > 0 && energy_halvings == 0)
-        --level; // grow back towards the planned increment (not right after the energy
-                 // budget asked for this step: the next one would break it as well)
+      else if (level > 0 && may_grow(2.0))
+        --level; // grow back towards the planned increment
       energy_level = std::min(energy_level, level);
       step_start = std::chrono::steady_clock::now();
       failed_seconds = 0;
