@@ -6,7 +6,9 @@
 /// contact/solver/contact_solver_options.hpp). An increment that does not converge is
 /// halved (up to the contact solver's max_cutbacks); if the smallest one still fails, a
 /// staggered iteration (β held, solve, update β, repeat) looks for the equilibrium after a
-/// debonding jump, and only then does the run stop.
+/// debonding jump, and only then does the run stop. A stage with `energy_tolerance` also
+/// halves a converged increment whose energy balance would break that budget, before anything
+/// of it is committed (energy_step_control.hpp).
 
 #include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
