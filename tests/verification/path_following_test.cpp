@@ -121,8 +121,8 @@ struct ColumnRun {
   double worst = 0; // largest |balance_error| / external work after an increment
 };
 
-ColumnRun column_run(int increments, double tolerance) {
-  std::string text = input("{type: dissipation, max_increments: 100000}");
+ColumnRun column_run(int increments, double tolerance, const std::string& control = "dissipation") {
+  std::string text = input("{type: " + control + ", max_increments: 100000}");
   text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
   // The default max_cutbacks: a shorter step than the column's 1/8 for the energy as well.
   text.replace(text.find("max_cutbacks: 3"), 15, "max_cutbacks: 6");
@@ -165,6 +165,18 @@ TEST(TracedEnergy, EnergyToleranceHoldsTheBalanceAtEveryStep) {
     EXPECT_LE(uniform.worst, tolerance);
     EXPECT_LT(controlled.increments + controlled.halvings, uniform.increments);
   }
+}
+
+// Arc-length steps are shortened the same way (the budget halves the arc length).
+TEST(TracedEnergy, EnergyToleranceHoldsAlongArcLengthSteps) {
+  const ColumnRun off = column_run(12, 0.0, "arc_length");
+  const ColumnRun on = column_run(12, 1e-4, "arc_length");
+  std::printf("arc_length: worst balance error %.3g in %d increments without energy_tolerance, "
+              "%.3g in %d (%d halvings, %d flagged) with 1e-4\n",
+              off.worst, off.increments, on.worst, on.increments, on.halvings, on.over_budget);
+  EXPECT_GT(off.worst, 1e-4);
+  EXPECT_LE(on.worst, 1e-4);
+  EXPECT_GT(on.halvings, 0);
 }
 
 void expect_input_error(const std::string& text, const std::string& fragment) {
