@@ -47,7 +47,7 @@ std::string step_flags(const StepReport& r) {
     parts.push_back("unstable");
   if (r.energy_halvings > 0)
     parts.push_back("energy: " + plural(r.energy_halvings, "halving", "halvings"));
-  if (r.over_energy_budget) parts.push_back("over energy_tolerance at the smallest step");
+  if (r.over_energy_budget) parts.push_back("kept over energy_tolerance");
   if (r.failed_seconds > 0) parts.push_back(seconds_text(r.failed_seconds) + " in failed attempts");
   if (parts.empty()) return "";
   std::string out = "  (";

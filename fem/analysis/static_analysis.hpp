@@ -83,7 +83,8 @@ struct StepReport {
   /// step was solved at, includes them).
   int energy_halvings = 0;
   /// Kept over the stage's energy_tolerance: at the smallest step (max_cutbacks) the
-  /// balance still broke it (a jump); its own error is excused from then on.
+  /// increment's error still broke its budget (a jump; its own error is excused from then
+  /// on), or the run's error was over once the work put in fell (energy_step_control.hpp).
   bool over_energy_budget = false;
 };
 
