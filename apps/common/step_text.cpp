@@ -17,6 +17,17 @@ std::string plural(int n, const std::string& one, const std::string& many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+// Only for a run that controlled its energy balance (a stage with energy_tolerance).
+std::string energy_summary(const RunSummary& s) {
+  if (s.energy_halvings == 0 && s.over_energy_budget == 0 && s.worst_controlled_energy_error == 0)
+    return "";
+  char worst[32];
+  std::snprintf(worst, sizeof worst, "%.2g", s.worst_controlled_energy_error);
+  return "; energy_tolerance: " + plural(s.energy_halvings, "halving", "halvings") + ", " +
+         plural(s.over_energy_budget, "increment", "increments") +
+         " kept over it, worst balance error " + worst + " of the work put in";
+}
+
 } // namespace
 
 std::string step_flags(const StepReport& r) {
@@ -34,6 +45,9 @@ std::string step_flags(const StepReport& r) {
     parts.push_back("jump: staggered");
   else if (r.unstable && r.cutbacks == 0)
     parts.push_back("unstable");
+  if (r.energy_halvings > 0)
+    parts.push_back("energy: " + plural(r.energy_halvings, "halving", "halvings"));
+  if (r.over_energy_budget) parts.push_back("kept over energy_tolerance");
   if (r.failed_seconds > 0) parts.push_back(seconds_text(r.failed_seconds) + " in failed attempts");
   if (parts.empty()) return "";
   std::string out = "  (";
@@ -49,7 +63,7 @@ std::string stepping_summary(const RunSummary& s, const std::string& program) {
          std::to_string(s.traced_increments) + " traced), " +
          plural(s.cutbacks, "cut-back", "cut-backs") + ", " +
          plural(s.staggered_increments, "jump", "jumps") + "; " + seconds_text(s.failed_seconds) +
-         " in failed attempts";
+         " in failed attempts" + energy_summary(s);
 }
 
 } // namespace bipot::app

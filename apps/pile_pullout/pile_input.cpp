@@ -125,6 +125,8 @@ ParamSchemaOf<PulloutStage> pullout_schema() {
       .positive();
   s.integer("max_increments", &P::max_increments, "traced steps allowed (default 20 x increments)")
       .at_least(1);
+  // The general input's stage key, with its range and doc (problem_spec.hpp).
+  s.real("energy_tolerance", &P::energy_tolerance, "", "") = energy_tolerance_spec();
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "fem/analysis/energy_ledger.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace bipot {
 
@@ -8,6 +9,15 @@ double EnergyTotals::balance_error() const {
   return external_work + interference_work -
          (bulk_energy + interface_energy + adhesion_dissipation + viscous_dissipation +
           contact_work);
+}
+
+double EnergyTotals::work_put_in() const {
+  return std::abs(external_work) + std::abs(interference_work);
+}
+
+double EnergyTotals::relative_error() const {
+  const double put_in = work_put_in();
+  return put_in > 0 ? balance_error() / put_in : 0.0;
 }
 
 EnergyLedger::EnergyLedger(const std::vector<std::unique_ptr<InterfaceEnforcement>>& ifaces)
@@ -42,6 +52,25 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
     totals_.viscous_dissipation += e.viscous_dissipation;
     totals_.contact_work += e.contact_work;
   }
+}
+
+EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector<double>& external,
+                                 const std::vector<double>& internal) {
+  // record() and back: the interfaces update their accounts only through record_energy().
+  const EnergyTotals totals = totals_;
+  const std::vector<double> u_old = u_, external_old = external_, internal_old = internal_;
+  std::vector<std::vector<double>> accounts;
+  for (const auto& ia : ifaces_)
+    accounts.push_back(ia->save_energy_account());
+  record(u, external, internal);
+  const EnergyTotals out = totals_;
+  totals_ = totals;
+  u_ = u_old;
+  external_ = external_old;
+  internal_ = internal_old;
+  for (std::size_t k = 0; k < ifaces_.size(); ++k)
+    ifaces_[k]->load_energy_account(accounts[k]);
+  return out;
 }
 
 void EnergyLedger::reset_displacements() {

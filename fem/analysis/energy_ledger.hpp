@@ -27,6 +27,11 @@ struct EnergyTotals {
   double contact_work = 0;         ///< of the irreversible traction r: friction (and contact)
   /// external + interference − (bulk + interface + adhesion + viscous + contact).
   double balance_error() const;
+  /// |external| + |interference|: the work put in, the scale of the balance.
+  double work_put_in() const;
+  /// balance_error() / work_put_in() (0 while no work has been put in): energy.csv's
+  /// relative_error.
+  double relative_error() const;
 };
 
 class EnergyLedger {
@@ -38,6 +43,11 @@ public:
   /// forces (loads + reactions) and the internal forces at u, all replicated.
   void record(const std::vector<double>& u, const std::vector<double>& external,
               const std::vector<double>& internal);
+  /// The totals record() would make of the same arguments, with the ledger and the
+  /// interfaces' accounts left as they were: an increment is judged on its energy before it
+  /// is committed (EnergyStepControl) and recorded only if it is kept.
+  EnergyTotals trial(const std::vector<double>& u, const std::vector<double>& external,
+                     const std::vector<double>& internal);
   /// The displacements were reset to zero with the stresses kept (geostatic stage).
   void reset_displacements();
   const EnergyTotals& totals() const { return totals_; }

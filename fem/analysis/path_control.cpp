@@ -83,7 +83,7 @@ bool PathControl::switch_on_failure() {
 }
 
 void PathControl::end_increment(const std::vector<double>& u, const std::vector<double>& u_begin,
-                                double dlambda, int iterations) {
+                                double dlambda, int iterations, bool may_grow) {
   traced_last_ = mode_ != Mode::Ramp;
   dissipation_last_ = 0;
   if (!stage_.control.path_following()) return;
@@ -93,7 +93,9 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
   // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
   // dissipation step never grows beyond the one asked for).
-  const double adapt = iterations <= 3 ? 1.5 : iterations >= slow_iterations ? 0.6 : 1.0;
+  const double adapt = iterations >= slow_iterations ? 0.6
+                       : iterations <= 3 && may_grow ? 1.5
+                                                     : 1.0;
   if (mode_ == Mode::ArcLength) {
     length_ = std::min(4.0 * length0_, adapt * step_->length);
   } else if (mode_ == Mode::Dissipation) {

@@ -52,9 +52,10 @@ public:
   /// Newton iterations from which a step counts as slow: the next traced step is shorter.
   static constexpr int slow_iterations = 8;
   /// A converged increment from u_begin to u of Δλ in `iterations`: its dissipation, the
-  /// next step's length and the control of the next increment.
+  /// next step's length and the control of the next increment. `may_grow` false: the next
+  /// step is no longer than this one (the stage's energy budget shortened it).
   void end_increment(const std::vector<double>& u, const std::vector<double>& u_begin,
-                     double dlambda, int iterations);
+                     double dlambda, int iterations, bool may_grow = true);
   bool traced_last() const { return traced_last_; }
   double last_dissipation() const { return dissipation_last_; }
   /// More traced increments than the stage allows.

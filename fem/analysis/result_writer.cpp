@@ -111,7 +111,8 @@ ResultWriter::ResultWriter(const Model& model, int rank, int size, std::string d
         std::vector<std::string>{"stage", "step", "time", "load_factor", "external_work",
                                  "interference_work", "bulk_energy", "interface_energy",
                                  "adhesion_dissipation", "viscous_dissipation", "contact_work",
-                                 "balance_error", "relative_error"});
+                                 "balance_error", "relative_error", "energy_halvings",
+                                 "over_energy_budget"});
     if (!model.rigid_bodies.empty()) rigid_bodies_ = rigid_body_csv(model, directory_);
   }
 }
@@ -156,13 +157,12 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   if (reactions_) reactions_->write_row(row);
   if (energy_) {
     const EnergyTotals& e = report.energy;
-    // Relative to the work put in so far (0 while none has been).
-    const double put_in = std::abs(e.external_work) + std::abs(e.interference_work);
-    energy_->write_row({static_cast<double>(report.stage_index + 1),
-                        static_cast<double>(report.step), report.time, report.load_factor,
-                        e.external_work, e.interference_work, e.bulk_energy, e.interface_energy,
-                        e.adhesion_dissipation, e.viscous_dissipation, e.contact_work,
-                        e.balance_error(), put_in > 0 ? e.balance_error() / put_in : 0.0});
+    energy_->write_row(
+        {static_cast<double>(report.stage_index + 1), static_cast<double>(report.step), report.time,
+         report.load_factor, e.external_work, e.interference_work, e.bulk_energy,
+         e.interface_energy, e.adhesion_dissipation, e.viscous_dissipation, e.contact_work,
+         e.balance_error(), e.relative_error(), static_cast<double>(report.energy_halvings),
+         report.over_energy_budget ? 1.0 : 0.0});
   }
   if (rigid_bodies_) {
     row.resize(4);

@@ -1,5 +1,6 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/analysis/detail/static_analysis_impl.hpp"
+#include "fem/analysis/energy_step_control.hpp"
 
 namespace bipot {
 
@@ -48,6 +49,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   // magnitudes seen, for the snap-back flag (restored by a restart).
   last_resultant.resize(interfaces.size(), {0, 0, 0});
   largest_resultant.resize(interfaces.size(), {0, 0, 0});
+  EnergyStepControl energy_control;
 
   for (std::size_t s = first_stage; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
@@ -99,7 +101,24 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     auto step_start = std::chrono::steady_clock::now();
     double failed_seconds = 0;
     PathControl path(stage, newton_system.get(), interfaces);
-    int traced_steps = 0;
+    energy_control.begin_stage(stage.energy_tolerance, energy->totals());
+    // energy_halvings: of the increment under way; energy_level: the part of the cut-back
+    // level owed to the energy budget, which says nothing of the solver's convergence.
+    int traced_steps = 0, energy_halvings = 0, energy_level = 0;
+    // A step the energy budget shortened that then fails to converge at the smallest step
+    // (a dissipation step too short for the Jacobian at a limit point) goes back to the last
+    // attempt that converged and keeps it, flagged over the budget: the control never makes
+    // a run fail that would have gone on without it.
+    int energy_converged_level = -1;
+    bool energy_last_resort = false;
+    const auto energy_retreat = [&](std::chrono::steady_clock::time_point attempt_start) {
+      if (energy_converged_level < 0 || energy_last_resort) return false;
+      --energy_level; // the halving after that attempt
+      level = energy_converged_level;
+      energy_last_resort = true;
+      failed_seconds += seconds_since(attempt_start);
+      return true;
+    };
     while (done < 1.0 - 1e-12) {
       const auto attempt_start = std::chrono::steady_clock::now();
       const double size = planned / std::pow(2.0, level);
@@ -145,6 +164,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
             failed_seconds += seconds_since(attempt_start);
             continue;
           }
+          if (energy_retreat(attempt_start)) continue;
           throw IncrementFailure(
               path.failure_message(s, step + 1, done, level, log.history, log.failure),
               residual_history_text(log.history));
@@ -184,6 +204,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
             failed_seconds += seconds_since(attempt_start);
             continue;
           }
+          if (energy_retreat(attempt_start)) continue;
           // The fallback holds β and updates it: without adhesion left anywhere it would only
           // repeat the failed solve.
           beta_can_change = std::any_of(interfaces.begin(), interfaces.end(),
@@ -230,7 +251,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           throw IncrementFailure(msg.str(), residual_history_text(log.history));
         }
       }
-      path.end_increment(u, u_begin, lambda - done, log.iterations);
       auto t0 = std::chrono::steady_clock::now();
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
@@ -238,9 +258,6 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.internal_force(u, reaction);
       reaction.finish_assembly();
       const std::vector<double> internal = reaction.gather_all();
-      // Commit after that cell loop at the converged u: generalized_newton's last bulk
-      // assembly was at the start of the increment (the rest followed by condensation).
-      solid.commit();
       reaction.axpy(-1.0, F_step);
       if (has_contact) {
         R.set_zero();
@@ -249,14 +266,51 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         R.finish_assembly();
         reaction.axpy(-1.0, R);
       }
-      reaction_all = reaction.gather_all();
-      reaction_scale = reaction.norm2();
+      std::vector<double> reactions = reaction.gather_all();
       // External forces on the bodies: the loads and the supports' reactions. Recorded
       // before the interfaces commit (the ledger reads β before and after the step).
       std::vector<double> external = F_step.gather_all();
       for (std::size_t d = 0; d < external.size(); ++d)
-        external[d] += reaction_all[d];
+        external[d] += reactions[d];
+      // The stage's energy_tolerance: an increment whose balance breaks the budget is redone
+      // in halves before anything of it is committed.
+      auto energy_verdict = EnergyStepControl::Verdict::Accept;
+      const EnergyTotals energy_before = energy->totals();
+      if (energy_control.active()) {
+        energy_verdict = energy_control.judge(energy_before, energy->trial(u, external, internal),
+                                              level < max_cutbacks && !energy_last_resort);
+        if (energy_verdict == EnergyStepControl::Verdict::Halve) {
+          u = u_begin;
+          matrix_ready = false;
+          energy_converged_level = level;
+          if (path.following()) {
+            // The attempt is redone: it is neither a traced increment nor one of the stage's.
+            --summary.traced_increments;
+            --traced_steps;
+          }
+          ++level;
+          ++energy_level;
+          ++energy_halvings;
+          ++summary.energy_halvings;
+          summary.assembly_seconds += seconds_since(t0);
+          failed_seconds += seconds_since(attempt_start);
+          continue;
+        }
+      }
+      // Commit after that cell loop at the converged u: generalized_newton's last bulk
+      // assembly was at the start of the increment (the rest followed by condensation).
+      solid.commit();
+      reaction_all = std::move(reactions);
+      reaction_scale = reaction.norm2();
       energy->record(u, external, internal);
+      energy_control.accept(energy_before, energy->totals(), energy_verdict);
+      // A step the energy budget shortened, or one whose error leaves no room for a longer
+      // one (traced steps grow by 1.5, the ramp by 2), does not grow.
+      const auto may_grow = [&](double growth) {
+        return energy_halvings == 0 &&
+               energy_control.may_grow(energy_before, energy->totals(), growth);
+      };
+      path.end_increment(u, u_begin, lambda - done, log.iterations, may_grow(1.5));
       for (const auto& ia : interfaces)
         ia->commit();
       tied_interface_forces((1.0 - lambda) * gravity_before + lambda * gravity_now);
@@ -271,6 +325,12 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.traced = path.traced_last();
       rep.dissipation = path.last_dissipation();
       rep.energy = energy->totals();
+      rep.energy_halvings = energy_halvings;
+      rep.over_energy_budget = energy_verdict == EnergyStepControl::Verdict::OverBudget;
+      if (rep.over_energy_budget) ++summary.over_energy_budget;
+      if (energy_control.active())
+        summary.worst_controlled_energy_error = std::max(
+            summary.worst_controlled_energy_error, energy_control.controlled_error(rep.energy));
       rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
       rep.requested_output = !rep.traced && lambda == next_level &&
                              (asked_first || std::binary_search(stage.output_at.begin(),
@@ -288,7 +348,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.cutbacks = level;
       rep.staggered = log.staggered;
       // A traced step on which the load factor falls is on the unstable branch.
-      rep.unstable = level > 0 || log.staggered > 0 || (rep.traced && lambda < done);
+      rep.unstable = level > energy_level || log.staggered > 0 || (rep.traced && lambda < done);
       // Snap-back: a resultant component lost over 20% of the largest value it has had, and
       // the loss is over 5% of the largest interface force of the model (so that a small
       // interface unloading smoothly, like a pile toe, is not flagged).
@@ -316,10 +376,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       done = lambda;
       if (rep.traced)
         level = 0; // the path control keeps the step that converged
-      else if (level > 0)
+      else if (level > 0 && may_grow(2.0))
         --level; // grow back towards the planned increment
+      energy_level = std::min(energy_level, level);
       step_start = std::chrono::steady_clock::now();
       failed_seconds = 0;
+      energy_halvings = 0;
+      energy_converged_level = -1;
+      energy_last_resort = false;
       progress.planned_step = rep.planned_step;
       progress.step_time = rep.time;
       if (options.on_increment_end) options.on_increment_end(rep);

@@ -6,7 +6,9 @@
 /// contact/solver/contact_solver_options.hpp). An increment that does not converge is
 /// halved (up to the contact solver's max_cutbacks); if the smallest one still fails, a
 /// staggered iteration (β held, solve, update β, repeat) looks for the equilibrium after a
-/// debonding jump, and only then does the run stop.
+/// debonding jump, and only then does the run stop. A stage with `energy_tolerance` also
+/// halves a converged increment whose energy balance would break that budget, before anything
+/// of it is committed (energy_step_control.hpp).
 
 #include "fem/analysis/energy_ledger.hpp"
 #include "fem/analysis/model.hpp"
@@ -76,6 +78,14 @@ struct StepReport {
   double dissipation = 0;
   /// The run's energy balance up to this increment (energy.csv).
   EnergyTotals energy;
+  /// Halvings the stage's energy_tolerance asked for before this increment was kept (each
+  /// a converged attempt whose energy balance broke the budget; `cutbacks`, the level the
+  /// step was solved at, includes them).
+  int energy_halvings = 0;
+  /// Kept over the stage's energy_tolerance: at the smallest step (max_cutbacks) the
+  /// increment's error still broke its budget (a jump; its own error is excused from then
+  /// on), or the run's error was over once the work put in fell (energy_step_control.hpp).
+  bool over_energy_budget = false;
 };
 
 struct RunSummary {
@@ -87,7 +97,12 @@ struct RunSummary {
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
   int sub_increments = 0;       ///< converged increments between planned and asked levels
   int traced_increments = 0;    ///< increments traced by path-following
-  double failed_seconds = 0;    ///< wall time of the failed attempts
+  int energy_halvings = 0;      ///< converged attempts redone for the energy_tolerance
+  int over_energy_budget = 0;   ///< increments kept over the energy_tolerance (flagged)
+  /// Largest |balance error| / work put in after an increment of a stage with an
+  /// energy_tolerance, the excused errors of flagged increments left out.
+  double worst_controlled_energy_error = 0;
+  double failed_seconds = 0; ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time
   double assembly_seconds = 0; ///< cell loops, loads, reactions

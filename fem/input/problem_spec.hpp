@@ -139,8 +139,15 @@ struct StageSpec {
   /// Load factors in (0, 1], increasing, at which the ramp also ends an increment and the
   /// results (VTK included) are written, besides the planned levels k/increments.
   std::vector<double> output_at;
+  /// The run's |energy balance error| allowed after every increment, relative to the work
+  /// put in (0: no control; energy_tolerance_spec()).
+  double energy_tolerance = 0;
   std::string where;
 };
+
+/// The stage key `energy_tolerance`: name, range and doc, read by the stage reader and by the
+/// pile app's `pullout` stage, and shown in the docs from the same entry.
+ParamSpec energy_tolerance_spec();
 
 /// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
 /// mesh, or `facet_sets: [a, b]` with coincident nodes or nodes facing each other.

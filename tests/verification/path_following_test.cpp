@@ -15,6 +15,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace bipot {
 namespace {
@@ -109,6 +112,73 @@ TEST(TracedEnergy, BalanceIsExactWhileElasticAndSecondOrderWhileDebonding) {
   EXPECT_GT(coarse / fine, 10.0); // second order: 16 for a 4 times shorter step
 }
 
+// The traced column with `energy_tolerance`: an increment whose balance would break the
+// budget is redone in halves (EnergyStepControl), so the balance holds at every step. The
+// same number of increments spread evenly (control off) breaks it: the control spends its
+// increments where β falls fastest.
+struct ColumnRun {
+  int increments = 0, halvings = 0, over_budget = 0;
+  double worst = 0; // largest |balance_error| / external work after an increment
+};
+
+ColumnRun column_run(int increments, double tolerance, const std::string& control = "dissipation") {
+  std::string text = input("{type: " + control + ", max_increments: 100000}");
+  text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
+  // The default max_cutbacks: a shorter step than the column's 1/8 for the energy as well.
+  text.replace(text.find("max_cutbacks: 3"), 15, "max_cutbacks: 6");
+  if (tolerance > 0)
+    text.replace(text.find("    control:"), 0,
+                 "    energy_tolerance: " + std::to_string(tolerance) + "\n");
+  const Model model = bipot::test::model_from_text(text, "traced.yaml");
+  StaticAnalysis analysis(model);
+  ColumnRun run;
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    run.worst = std::max(run.worst, std::abs(r.energy.relative_error()));
+    EXPECT_EQ(r.staggered, 0);
+  });
+  run.increments = summary.steps;
+  run.halvings = summary.energy_halvings;
+  run.over_budget = summary.over_energy_budget;
+  return run;
+}
+
+TEST(TracedEnergy, EnergyToleranceHoldsTheBalanceAtEveryStep) {
+  for (double tolerance : {1e-4, 1e-5}) {
+    const ColumnRun controlled = column_run(12, tolerance);
+    // Uniform refinement: planned increments doubled until the balance holds at every step.
+    ColumnRun uniform;
+    for (int n = 12; n <= 12 * 64 && !(uniform.increments > 0 && uniform.worst <= tolerance);
+         n *= 2)
+      uniform = column_run(n, 0.0);
+    std::printf("energy_tolerance %.0e: %d increments (%d halvings, %d flagged), worst balance "
+                "error %.3g; uniform refinement: %d increments, worst %.3g\n",
+                tolerance, controlled.increments, controlled.halvings, controlled.over_budget,
+                controlled.worst, uniform.increments, uniform.worst);
+    EXPECT_LE(controlled.worst, tolerance);
+    // 1e-5: the first traced step from the limit point and a few ramp steps after the
+    // snap-back stay over their own share at the smallest step (1/64) and are flagged; the
+    // run's balance holds all the same.
+    if (tolerance == 1e-4) {
+      EXPECT_EQ(controlled.over_budget, 0);
+    }
+    EXPECT_GT(controlled.halvings, 0);
+    EXPECT_LE(uniform.worst, tolerance);
+    EXPECT_LT(controlled.increments + controlled.halvings, uniform.increments);
+  }
+}
+
+// Arc-length steps are shortened the same way (the budget halves the arc length).
+TEST(TracedEnergy, EnergyToleranceHoldsAlongArcLengthSteps) {
+  const ColumnRun off = column_run(12, 0.0, "arc_length");
+  const ColumnRun on = column_run(12, 1e-4, "arc_length");
+  std::printf("arc_length: worst balance error %.3g in %d increments without energy_tolerance, "
+              "%.3g in %d (%d halvings, %d flagged) with 1e-4\n",
+              off.worst, off.increments, on.worst, on.increments, on.halvings, on.over_budget);
+  EXPECT_GT(off.worst, 1e-4);
+  EXPECT_LE(on.worst, 1e-4);
+  EXPECT_GT(on.halvings, 0);
+}
+
 void expect_input_error(const std::string& text, const std::string& fragment) {
   try {
     read_problem_text(text, "bad.yaml", bipot::builtin_catalogue());
@@ -130,6 +200,18 @@ TEST(PathFollowingInput, BadControlsAreLocated) {
   std::string still = input("arc_length");
   still.replace(still.find("value: 0.12"), 11, "value: 0");
   expect_input_error(still, "nothing to scale");
+}
+
+// `energy_tolerance` out of [0, 1): at its line, with the range (energy_tolerance_spec()).
+TEST(PathFollowingInput, BadEnergyToleranceIsLocated) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"-1.0e-6", "-1e-06"}, {"1.0", "1"}, {"2", "2"}};
+  for (const auto& [value, shown] : cases) {
+    std::string text = input("dissipation");
+    text.replace(text.find("    control:"), 0, "    energy_tolerance: " + value + "\n");
+    expect_input_error(text, "bad.yaml:23:23: stages[0].energy_tolerance: value " + shown +
+                                 " is out of range [0, 1)");
+  }
 }
 
 } // namespace

@@ -159,7 +159,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
       list_entries(top, "stages",
                    {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
                     "loads", "interface_gaps", "interfaces", "obstacle_displacements",
-                    "rigid_bodies", "control", "output_at"},
+                    "rigid_bodies", "control", "output_at", "energy_tolerance"},
                    expected);
   std::vector<InterfaceLawChangeSpec> active;
   for (const InterfaceSpec& f : interfaces)
@@ -195,6 +195,10 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
           m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
                                    std::to_string(st.output_at[k - 1]) + ")");
       }
+    }
+    if (m.real("energy_tolerance", st.energy_tolerance) && m.has("energy_tolerance")) {
+      if (const auto problem = energy_tolerance_spec().check(st.energy_tolerance))
+        m.error("energy_tolerance", *problem);
     }
     out.push_back(std::move(st));
   }
@@ -266,3 +270,19 @@ void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag) {
 }
 
 } // namespace bipot::input
+
+namespace bipot {
+
+ParamSpec energy_tolerance_spec() {
+  ParamSpec s;
+  s.name = "energy_tolerance";
+  s.doc = "the run's energy balance error allowed after every increment, as a fraction of the "
+          "work put in; an increment that breaks it is redone in halves (0: no control; "
+          "docs/theory.md, Energy balance)";
+  s.non_negative().less_than(1.0).with_default(0.0);
+  s.because("a fraction of the work put in: 0 turns the control off, 1 or more would allow any "
+            "balance");
+  return s;
+}
+
+} // namespace bipot
