@@ -1,4 +1,4 @@
-// One load increment with `generalized_newton` (StaticAnalysis::Impl): the bulk is condensed
+// One load increment with `generalized_newton` (ExactNewtonIncrement): the bulk is condensed
 // onto the interface DOFs I (SchurComplementSolver), the exact generalized Newton runs on the
 // small dense system of I and the interface multipliers (CondensedInterfaceSystem),
 // and one back substitution recovers the rest of the mesh.
@@ -11,7 +11,15 @@
 // or O(|I|³) when it refactorises, independent of the mesh interior. A nonlinear bulk repeats the
 // condensation around each new bulk state (outer loop) until the assembled residual is met,
 // each outer step backtracked on that whole residual.
-#include "fem/analysis/detail/static_analysis_impl.hpp"
+#include "fem/analysis/detail/exact_newton_increment.hpp"
+
+#include "fem/analysis/detail/convergence_test.hpp"
+#include "fem/analysis/detail/line_search.hpp"
+#include "fem/analysis/detail/path_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace bipot {
 
@@ -27,71 +35,72 @@ double law_residual(const CondensedInterfaceSystem& sys, const std::vector<bool>
 }
 } // namespace
 
-bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
-                                                 PathStep* path, int max_iterations) {
-  const NonlinearSolverOptions& copt = model.contact_solver;
-  const int iteration_limit = max_iterations > 0 ? max_iterations : copt.max_iterations;
-  const CondensedInterfaceSystem& sys = *newton_system;
+bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& log) {
+  const double lambda = request.lambda, dtau = request.dtau;
+  PathStep* const path = request.path;
+  const NonlinearSolverOptions& copt = ctx_.contact_solver;
+  const bool linear = ctx_.linear;
+  const auto& interfaces = ctx_.interfaces;
+  const auto& target = ctx_.target;
+  const auto& start = ctx_.start;
+  std::vector<double>& u = ctx_.u;
+  SparseMatrix& K = ctx_.K;
+  DistributedVector &R = ctx_.R, &du = ctx_.du, &F_step = ctx_.F_step;
+  RunSummary& summary = ctx_.summary;
+  const int iteration_limit =
+      request.max_iterations > 0 ? request.max_iterations : copt.max_iterations;
+  const CondensedInterfaceSystem& sys = sys_;
   const Index nI = sys.num_dofs(), n = sys.size();
-  F_step.copy(F_prev);
-  F_step.scale(1.0 - lambda);
-  F_step.axpy(lambda, F_cur);
-  for (std::size_t k = 0; k < interfaces.size(); ++k) {
-    interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
-    interfaces[k]->begin_increment(extrapolation);
-  }
-  move_obstacles(lambda);
+  ctx_.begin_increment(lambda);
   std::vector<Index> constrained_dofs;
   for (const auto& kv : target)
     constrained_dofs.push_back(kv.first);
-  std::vector<bool> prescribed(u.size());
-  for (const auto& kv : target)
-    prescribed[kv.first] = true;
+  const std::vector<bool> prescribed = ctx_.prescribed();
   std::vector<bool> constrained_I(nI);
   for (Index k = 0; k < nI; ++k)
     constrained_I[k] = target.count(sys.dofs()[k]) != 0;
 
-  double reference = -1.0;
+  ConvergenceTest test(copt.tolerance);
   Constraints constraints;
   for (int outer = 0;; ++outer) {
     // Bulk residual R0 = F − f_int(u), the prescribed increments eliminated (first pass).
     auto t0 = std::chrono::steady_clock::now();
     constraints.clear();
     for (const auto& [d, v] : target)
-      constraints.set(d, outer == 0 ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
-    const bool refactor = !schur_ready || !linear || constrained_dofs != schur_constrained;
+      constraints.set(d, outer == 0 ? start.at(d) + lambda * (v - start.at(d)) - u[d] : 0.0);
+    const bool refactor = !schur_ready_ || !linear || constrained_dofs != schur_constrained_;
     // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
     // from products with K, assembled with K at each refactorisation.
-    const bool by_product = linear && rigid.empty();
+    const bool by_product = linear && ctx_.rigid.empty();
     R.set_zero();
-    if (refactor) K->set_zero();
+    if (refactor) K.set_zero();
     if (refactor && by_product)
-      bulk_product.assemble(solid, u, constraints, *K, R);
-    else if (by_product && bulk_product.ready())
-      bulk_product.residual(solid, *K, u, constraints, R);
+      bulk_product_.assemble(ctx_.solid, u, constraints, K, R);
+    else if (by_product && bulk_product_.ready())
+      bulk_product_.residual(ctx_.solid, K, u, constraints, R);
     else
-      solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
+      ctx_.solid.assemble(u, constraints, refactor ? &K : nullptr, R);
     R.finish_assembly();
-    if (refactor) K->finish_assembly();
-    add_step_loads(constraints);
+    if (refactor) K.finish_assembly();
+    ctx_.add_step_loads(constraints);
     // Path-following: R is affine in the load factor (prescribed values and loads are), so
     // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ.
-    DistributedVector R1(dist);
+    DistributedVector R1(ctx_.dist);
     if (path) {
       const DistributedVector R_lambda = R;
       const DistributedVector F_lambda = F_step;
       Constraints ahead;
       for (const auto& [d, v] : target)
-        ahead.set(d, start[d] + (lambda + 1.0) * (v - start[d]) - u[d]);
-      F_step.axpy(1.0, F_cur);
-      F_step.axpy(-1.0, F_prev);
+        ahead.set(d, start.at(d) + (lambda + 1.0) * (v - start.at(d)) - u[d]);
+      F_step.axpy(1.0, ctx_.F_cur);
+      F_step.axpy(-1.0, ctx_.F_prev);
       R.set_zero();
-      if (by_product && bulk_product.ready())
-        bulk_product.residual(solid, *K, u, ahead, R);
+      if (by_product && bulk_product_.ready())
+        bulk_product_.residual(ctx_.solid, K, u, ahead, R);
       else
-        solid.assemble(u, ahead, nullptr, R);
+        ctx_.solid.assemble(u, ahead, nullptr, R);
       R.finish_assembly();
-      add_step_loads(ahead);
+      ctx_.add_step_loads(ahead);
       R1.copy(R);
       R1.axpy(-1.0, R_lambda);
       R.copy(R_lambda);
@@ -105,27 +114,24 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     for (const auto& ia : interfaces)
       ia->add_to_system(constraints, nullptr, du);
     du.finish_assembly();
-    const double full_norm = free_norm(du, constraints);
-    double force_scale = 0, roundoff = 0;
-    for (const auto& ia : interfaces) {
-      force_scale = std::max(force_scale, ia->force_scale());
-      roundoff = std::max(roundoff, ia->roundoff_force());
-    }
+    const double full_norm = ctx_.free_norm(du, constraints);
     summary.assembly_seconds += seconds_since(t0);
-    if (reference < 0) {
-      reference = std::max({full_norm, F_step.norm2(), force_scale, reaction_scale});
-      if (reference == 0.0) return true; // nothing acts on the bodies
+    if (!test.has_reference()) {
+      test.set_reference(full_norm, F_step.norm2(), ctx_.interface_force_scale(),
+                         ctx_.reaction_scale);
+      if (test.reference() == 0.0) return true; // nothing acts on the bodies
     }
-    const double floor = std::max(copt.tolerance * reference, roundoff_factor * roundoff);
+    test.set_roundoff(ctx_.interface_roundoff());
+    const double floor = test.force_floor();
     // A nonlinear bulk: the history is that of the whole residual at each bulk state (Newton
     // on the bulk, quadratic with the consistent tangent); the inner iterations solve a
     // linearised problem exactly and their residuals say nothing about the increment.
-    if (!linear) log.history.push_back(full_norm / reference);
+    if (!linear) log.history.push_back(test.relative(full_norm));
     // The interface law at u: a damped outer step (below) leaves the multipliers between two
     // inner solutions, off the law, so the outer test and merit need it besides equilibrium.
     const double law = law_residual(sys, constrained_I);
     if (outer > 0) {
-      if (full_norm <= floor && law <= copt.tolerance * reference) return true;
+      if (test.forces_met(full_norm) && test.law_met(law)) return true;
       if (outer >= copt.max_iterations) {
         log.failure = "the bulk (outer) iterations did not converge in " + std::to_string(outer) +
                       " condensations";
@@ -137,22 +143,22 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       try {
         // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
         // residual check after each increment would catch a K that is not.
-        schur.factorize(*K, sys.dofs(), linear);
+        schur_.factorize(K, sys.dofs(), linear);
       } catch (const SolverError& e) {
         log.failure = e.what();
         return false;
       }
       summary.setup_seconds += seconds_since(t0);
       ++summary.matrix_setups;
-      schur_ready = true;
-      newton_matrix.reset(); // S changed: the old Newton matrix is no preconditioner
-      schur_constrained = constrained_dofs;
+      schur_ready_ = true;
+      newton_matrix_.reset(); // S changed: the old Newton matrix is no preconditioner
+      schur_constrained_ = constrained_dofs;
     }
     t0 = std::chrono::steady_clock::now();
-    const Eigen::VectorXd c1 = path ? schur.reduce(R1) : Eigen::VectorXd();
-    const Eigen::VectorXd c = schur.reduce(R);
+    const Eigen::VectorXd c1 = path ? schur_.reduce(R1) : Eigen::VectorXd();
+    const Eigen::VectorXd c = schur_.reduce(R);
     summary.solve_seconds += seconds_since(t0);
-    const Eigen::MatrixXd& S = schur.schur();
+    const Eigen::MatrixXd& S = schur_.schur();
 
     // Newton on z = (x, λ_c[, Δλ]): x the increments of I's DOFs from u, λ_c = A r the
     // multipliers, Δλ the load factor's increment of a path-following step (one more row:
@@ -161,7 +167,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     std::vector<double> trial = u;
     Eigen::VectorXd z(nz), F(nz), dz(nz), F_try(nz), grad;
     // J = [−S 0; 0 0] + the sparse interface (and border) terms: S is not copied per iteration.
-    CondensedNewtonMatrix J(S, nz, schur.symmetric());
+    CondensedNewtonMatrix J(S, nz, schur_.symmetric());
     std::vector<Eigen::Triplet<double>> entries;
     const Eigen::VectorXd lambda0 = sys.multipliers();
     z.head(nI).setZero();
@@ -177,7 +183,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     // merit and the line search cut steps that reduced the forces: on rccm_traced.yaml with
     // 100, 120 or 160 increments single traced steps took 14 to 20 iterations (5 now).
     const double g_weight =
-        path ? copt.tolerance * reference / path->constraint_tolerance(copt.tolerance) : 0.0;
+        path ? copt.tolerance * test.reference() / path->constraint_tolerance(copt.tolerance) : 0.0;
     auto residual = [&](const Eigen::VectorXd& at, Eigen::VectorXd& out,
                         CondensedNewtonMatrix* jac) {
       for (Index k = 0; k < nI; ++k)
@@ -208,7 +214,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     auto merit = [&](const Eigen::VectorXd& r) {
       return path ? std::hypot(r.head(n).norm(), g_weight * r(n)) : r.norm();
     };
-    ReusedLuSolver& newton_solver = path ? path_matrix : newton_matrix;
+    ReusedLuSolver& newton_solver = path ? path_matrix_ : newton_matrix_;
     // Single-precision factors: GMRES stays in double and meets the same tolerances, with
     // half the bytes streamed per preconditioner application (docs/theory.md). A nonlinear
     // bulk changes S, hence the factors, at every outer iteration: few solves per factors,
@@ -221,9 +227,9 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       const bool constraint_met =
           !path || std::abs(F(n)) <= path->constraint_tolerance(copt.tolerance);
       summary.assembly_seconds += seconds_since(t0);
-      if (linear) log.history.push_back(force / reference);
-      log.contact = change / reference;
-      if (force <= floor && change <= copt.tolerance * reference && constraint_met) break;
+      if (linear) log.history.push_back(test.relative(force));
+      log.contact = test.relative(change);
+      if (test.forces_met(force) && test.law_met(change) && constraint_met) break;
       if (!std::isfinite(force) || !std::isfinite(change)) {
         log.failure = "the interface residual is not finite";
         return false;
@@ -240,7 +246,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       // from the solution the GMRES on earlier factors stops much sooner (2.6× fewer GMRES
       // iterations on the pile at 77k DOFs). Path-following steps keep the tight solve (their
       // constraint row has a scale of its own).
-      const double eta = path ? 0.0 : std::min(1e-3, F.norm() / reference);
+      const double eta = path ? 0.0 : std::min(1e-3, test.relative(F.norm()));
       dz = newton_solver.solve(J, -F, eta);
       summary.solve_seconds += seconds_since(t0);
       ++summary.linear_solves;
@@ -272,14 +278,14 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       path->dlambda = z(n);
       path->x = z.head(nI);
       R.axpy(z(n), R1);
-      F_step.axpy(z(n), F_cur);
-      F_step.axpy(-z(n), F_prev);
-      schur.reduce(R);
+      F_step.axpy(z(n), ctx_.F_cur);
+      F_step.axpy(-z(n), ctx_.F_prev);
+      schur_.reduce(R);
     }
-    schur.expand(z.head(nI), du);
+    schur_.expand(z.head(nI), du);
     summary.solve_seconds += seconds_since(t0);
     std::vector<double> du_all = du.gather_all();
-    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
+    ctx_.rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
     const Eigen::VectorXd lambda1 = z.segment(nI, n - nI);
     double step = 1.0;
     if (!linear && copt.line_search) {
@@ -290,15 +296,13 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       // Mohr-Coulomb pile did, period 3). The prescribed DOFs always take their whole
       // increment; the multipliers move along with the displacements.
       t0 = std::chrono::steady_clock::now();
-      Constraints fixed;
-      for (const auto& kv : target)
-        fixed.set(kv.first, 0.0);
+      const Constraints fixed = ctx_.held();
       std::vector<double> trial(u.size());
       step = backtracking_step(std::hypot(full_norm, law), [&](double s) {
         for (std::size_t i = 0; i < u.size(); ++i)
           trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
         sys.set_multipliers(lambda0 + s * (lambda1 - lambda0));
-        const double force = residual_norm(trial, dtau, fixed);
+        const double force = ctx_.residual_norm(trial, dtau, fixed);
         return std::hypot(force, law_residual(sys, constrained_I));
       });
       summary.assembly_seconds += seconds_since(t0);
@@ -316,13 +320,11 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
     // Linear bulk: the condensation is exact, so the whole residual R0 − K du + f_c(u) is the
     // interface residual up to round-off. Check it (a matrix-vector product) rather than trust it.
     t0 = std::chrono::steady_clock::now();
-    DistributedVector Kdu(dist), full(dist);
-    K->multiply(du, Kdu);
+    DistributedVector Kdu(ctx_.dist), full(ctx_.dist);
+    K.multiply(du, Kdu);
     full.copy(R);
     full.axpy(-1.0, Kdu);
-    Constraints fixed;
-    for (const auto& kv : target)
-      fixed.set(kv.first, 0.0);
+    const Constraints fixed = ctx_.held();
     for (const auto& ia : interfaces)
       ia->add_to_system(fixed, nullptr, full);
     full.finish_assembly();
