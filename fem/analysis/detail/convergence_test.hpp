@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace bipot::analysis_detail {
+namespace bipot {
 
 /// The force residual is met below `tolerance` × a reference force, or below the round-off
 /// floor of the interface forces; the interface law (multiplier change or residual) is met
@@ -48,4 +48,4 @@ private:
   double roundoff_ = 0.0;
 };
 
-} // namespace bipot::analysis_detail
+} // namespace bipot

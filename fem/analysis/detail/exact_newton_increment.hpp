@@ -13,12 +13,13 @@
 
 namespace bipot {
 
-/// The Newton iteration runs on the small dense system of the interface DOFs I and the
-/// interface multipliers (CondensedInterfaceSystem); the interface linear algebra is the
-/// Schur complement of K on I (SchurComplementSolver, factorised once per constrained set
-/// while the bulk is linear) and the dense Newton matrices (ReusedLuSolver); a nonlinear bulk
-/// adds an outer loop over condensations. Handles path-following steps (IncrementRequest::
-/// path).
+/// Each outer iteration condenses the bulk at u onto the interface DOFs I (the Schur
+/// complement of K on I, SchurComplementSolver, factorised once per constrained set while the
+/// bulk is linear), runs the generalized Newton iteration on the small dense system of I and
+/// the interface multipliers (InterfaceNewton), and recovers the rest of the mesh by one back
+/// substitution. A linear bulk needs one outer iteration, checked on the whole mesh; a
+/// nonlinear one repeats it around each new bulk state until the assembled residual is met.
+/// Handles path-following steps (IncrementRequest::path).
 class ExactNewtonIncrement : public IncrementSolver {
 public:
   /// `schur_ready` is the driver's: it clears it when it overwrites K (a new ρ assembles the
@@ -29,6 +30,21 @@ public:
   bool solve(const IncrementRequest& request, IncrementLog& log) override;
 
 private:
+  struct Increment; ///< the increment's data and its current outer iteration
+  /// R = the bulk residual at u with the prescribed increments of outer iteration `outer`
+  /// (and inc.R1, its change per unit load factor, for a path); K assembled with `refactor`.
+  void assemble_bulk_residual(Increment& inc, int outer, bool refactor);
+  /// The whole residual at u (bulk and interface forces) on the free DOFs: the reference of
+  /// the increment and, for a nonlinear bulk, the test of the outer loop.
+  double whole_residual(const Increment& inc, double dtau);
+  /// Factorises K's Schur complement on I (false and log.failure if it fails).
+  bool condense(Increment& inc, IncrementLog& log);
+  /// du from the interface increment x; with a path, R and the loads at the Δλ found first.
+  std::vector<double> expand(Increment& inc, const Eigen::VectorXd& z);
+  /// A linear bulk: the whole residual R0 − K du + f_c(u) after the back substitution is the
+  /// interface residual up to round-off; true if it is below 100 × `floor`.
+  bool check_whole_mesh(double floor, IncrementLog& log);
+
   IncrementContext& ctx_;
   const CondensedInterfaceSystem& sys_;
   LinearBulkResidual& bulk_product_;
