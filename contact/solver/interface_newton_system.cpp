@@ -137,11 +137,16 @@ void InterfaceNewtonSystem::add_terms(const std::vector<bool>& constrained, Eige
     // are pulled together) is undetermined: any value satisfies the equations and the
     // reactions take the force. Fix its step by its own row (a zero column otherwise makes J
     // singular).
+    // A stuck component elsewhere gets stick_regularisation (two pairs on one node pair).
     for (int c = 0; c < d; ++c) {
-      bool acts = dF_dlambda.col(c).norm() != 0.0;
+      const bool free_in_law = dF_dlambda.col(c).norm() == 0.0;
+      bool acts = !free_in_law;
       for (int r = 0; r < d && !acts; ++r)
         acts = Q(r, c) != 0.0 && (!held_b(r) || !constrained[s.a + r]);
-      if (!acts) (*jac)(m + c, m + c, 1.0);
+      if (!acts)
+        (*jac)(m + c, m + c, 1.0);
+      else if (free_in_law)
+        (*jac)(m + c, m + c, stick_regularisation);
     }
   }
 }

@@ -16,9 +16,9 @@
 /// bipotential fixed point of docs/formulation.md §4, hence the interface law itself. Its exact
 /// generalized Jacobian, from the projection's and the β update's derivatives
 /// (InterfaceResponseDerivatives), makes the iteration locally quadratic; in stick
-/// ∂F_λ/∂λ = 0 and the rows enforce the jump exactly (no penalty), in separation λ = 0. A
-/// stuck component acting only on prescribed DOFs is undetermined; its row also fixes its own
-/// step (see add()).
+/// ∂F_λ/∂λ = 0 (but for stick_regularisation, below) and the rows enforce the jump exactly
+/// (no penalty), in separation λ = 0. A stuck component acting only on prescribed DOFs is
+/// undetermined; its row also fixes its own step (see add()).
 
 #include "contact/solver/interface_assembler.hpp"
 #include "fem/assembly/condensed_interface_system.hpp"
@@ -50,6 +50,15 @@ std::string condensed_size_problem(const CondensedSize& size, const std::string&
 
 class InterfaceNewtonSystem final : public CondensedInterfaceSystem {
 public:
+  /// ∂F_λ/∂λ of a stuck component in J (the law's own is 0). Two pairs on the same two nodes
+  /// (a node on two interfaces, as the pile's toe corner is on the shaft's and the toe's), both
+  /// stuck, tie the same jump: only the sum of their forces is determined and J is singular.
+  /// A fresh LU then gave Newton steps of 1e24 kN that no line search could take back (the
+  /// Coulomb pile: 332 linear solves and a cut-back; 75 with it). ε on the diagonal makes J
+  /// regular and picks the split of least ‖Δλ‖; elsewhere it only moves a Newton step's
+  /// F_λ by ε ‖Δλ‖, far below any tolerance (the block's and the piles' counts are unchanged).
+  static constexpr double stick_regularisation = 1e-12;
+
   /// Over `interfaces` (not owned).
   InterfaceNewtonSystem(const std::vector<InterfaceAssembler*>& interfaces, const DofMap& dofs);
 

@@ -146,7 +146,10 @@ TEST(InterfaceNewtonSystem, StickTiesTheJumpAndSeparationZeroesTheForce) {
     const Eigen::Matrix2d Qt = ia.frame(0).transpose();
     const Eigen::Matrix2d dF_dxb = J.block(4, 2, 2, 2);
     if (stick) {
-      EXPECT_LT(dF_dlambda.norm(), 1e-14);
+      // The law's ∂F_λ/∂λ is 0; J carries the stick regularisation ε I (two pairs on one node
+      // pair would make it singular).
+      const double eps = InterfaceNewtonSystem::stick_regularisation;
+      EXPECT_LE((dF_dlambda - eps * Eigen::Matrix2d::Identity()).norm(), 1e-14 * eps);
       EXPECT_LT((dF_dxb - 0.7 * 1.0 * Qt).norm(), 1e-12) << dF_dxb; // ρ = 1 (not set)
     } else {
       EXPECT_LT((dF_dlambda - Eigen::Matrix2d::Identity()).norm(), 1e-14);
@@ -177,12 +180,78 @@ TEST(InterfaceNewtonSystem, StuckPairOnPrescribedDofsKeepsTheMatrixRegular) {
   sys.add(held, F, &J);
   EXPECT_LT((J.bottomRightCorner(2, 2) - Eigen::Matrix2d::Identity()).norm(), 1e-14);
   EXPECT_EQ(Eigen::FullPivLU<Eigen::MatrixXd>(J).rank(), 6);
-  // With a free node b, the multipliers act on its rows: nothing is added.
+  // With a free node b, the multipliers act on its rows: only the stick regularisation ε I.
   std::vector<bool> b_free = {true, true, false, false};
   J.setZero();
   J.topLeftCorner(4, 4).setIdentity();
   sys.add(b_free, F, &J);
-  EXPECT_LT(J.bottomRightCorner(2, 2).norm(), 1e-14);
+  const double eps = InterfaceNewtonSystem::stick_regularisation;
+  EXPECT_LE((J.bottomRightCorner(2, 2) - eps * Eigen::Matrix2d::Identity()).norm(), 1e-14 * eps);
+}
+
+// A node on two interfaces (the pile's toe corner is on the shaft's and the toe's): two pairs
+// on the same two nodes, both stuck, tie the same jump twice, and only the sum of their forces
+// is determined. Bulk springs k on the four DOFs stand for the condensed S and a load c pulls
+// node b; in stick both nodes move by c / 2k and the pairs carry −c/2 together. The start
+// has the right forces (each pair inside its cone, μ = 1.5 so that both cones of a right-angled
+// corner hold them) and both nodes displaced together from the solution; stick is linear, so
+// one Newton step must solve it: a finite step and a new residual of 1e-9 of the first. Without
+// the stick regularisation J is singular, and the LU's step is not finite or is of size ≥ 1e12.
+TEST(InterfaceNewtonSystem, TwoStuckPairsOnOneNodePairKeepTheStepFinite) {
+  CoulombSignorini law({1.5});
+  const DofMap dofs(2, 2);
+  const DofDistribution dist(2, 2);
+  const Interface shaft = one_pair();
+  Interface toe = one_pair(); // the same nodes, the normal turned by 90°
+  toe.name = "toe";
+  InterfacePair& p = toe.pairs[0];
+  p.weight = 0.4;
+  p.normal = shaft.pairs[0].tangent1;
+  p.tangent1 = {-p.normal[1], p.normal[0], 0};
+  InterfaceAssembler ia_shaft(shaft, law, dofs, dist), ia_toe(toe, law, dofs, dist);
+  InterfaceNewtonSystem sys({&ia_shaft, &ia_toe}, dofs);
+  ASSERT_EQ(sys.num_dofs(), 4);
+  ASSERT_EQ(sys.num_multipliers(), 4);
+  const double k = 1e3;
+  const Eigen::Vector2d lambda_shaft(1.0, 0.5), lambda_toe(2.0, -1.0); // kN, local frames
+  const Eigen::Vector2d n(shaft.pairs[0].normal[0], shaft.pairs[0].normal[1]);
+  const Eigen::Vector2d t(shaft.pairs[0].tangent1[0], shaft.pairs[0].tangent1[1]);
+  const Eigen::Vector2d n2(p.normal[0], p.normal[1]), t2(p.tangent1[0], p.tangent1[1]);
+  const Eigen::Vector2d force_b =
+      lambda_shaft(0) * n + lambda_shaft(1) * t + lambda_toe(0) * n2 + lambda_toe(1) * t2;
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(4);
+  c.tail(2) = -2.0 * force_b;
+  const std::vector<bool> free(4, false);
+  auto residual = [&](const Eigen::VectorXd& z, Eigen::MatrixXd* J) {
+    std::vector<double> u(z.data(), z.data() + 4);
+    sys.set_multipliers(z.tail(4));
+    ia_shaft.evaluate(u, 0.1);
+    ia_toe.evaluate(u, 0.1);
+    Eigen::VectorXd F = Eigen::VectorXd::Zero(8);
+    F.head(4) = c - k * z.head(4);
+    if (J) {
+      J->setZero(8, 8);
+      J->topLeftCorner(4, 4) = -k * Eigen::Matrix4d::Identity();
+    }
+    sys.add(free, F, J);
+    return F;
+  };
+  const Eigen::Vector2d u = c.tail(2) / (2 * k) + Eigen::Vector2d(1e-4, -2e-4);
+  Eigen::VectorXd z(8);
+  z << u, u, lambda_shaft, lambda_toe;
+  Eigen::MatrixXd J;
+  const Eigen::VectorXd F0 = residual(z, &J);
+  ASSERT_EQ(ia_shaft.results()[0].status, ContactStatus::Stick);
+  ASSERT_EQ(ia_toe.results()[0].status, ContactStatus::Stick);
+  const Eigen::VectorXd dz = J.partialPivLu().solve(-F0);
+  std::printf("[two-stuck-pairs] |dz| = %.3e\n", dz.norm());
+  ASSERT_TRUE(dz.allFinite());
+  EXPECT_LT(dz.norm(), 1.0) << dz.transpose();
+  const Eigen::VectorXd F1 = residual(z + dz, nullptr);
+  EXPECT_EQ(ia_shaft.results()[0].status, ContactStatus::Stick);
+  EXPECT_EQ(ia_toe.results()[0].status, ContactStatus::Stick);
+  std::printf("[two-stuck-pairs] |F1| / |F0| = %.2e\n", F1.norm() / F0.norm());
+  EXPECT_LT(F1.norm(), 1e-9 * F0.norm());
 }
 
 } // namespace
