@@ -1,7 +1,7 @@
-// One load increment with `generalized_newton` (StaticAnalysis::Impl): the bulk is condensed
+// One load increment with `generalized_newton` (ExactNewtonIncrement): the bulk is condensed
 // onto the interface DOFs I (SchurComplementSolver), the exact generalized Newton runs on the
-// small dense system of I and the interface multipliers (CondensedInterfaceSystem),
-// and one back substitution recovers the rest of the mesh.
+// small dense system of I and the interface multipliers (InterfaceNewton), and one back
+// substitution recovers the rest of the mesh.
 //
 // With a linear bulk, the full system of the increment, K du = R0 + f_c(u + du) (R0 the
 // condensed bulk residual with the prescribed increments, f_c acting on I only), reduces
@@ -11,7 +11,16 @@
 // or O(|I|³) when it refactorises, independent of the mesh interior. A nonlinear bulk repeats the
 // condensation around each new bulk state (outer loop) until the assembled residual is met,
 // each outer step backtracked on that whole residual.
-#include "fem/analysis/detail/static_analysis_impl.hpp"
+#include "fem/analysis/detail/exact_newton_increment.hpp"
+
+#include "fem/analysis/detail/convergence_test.hpp"
+#include "fem/analysis/detail/interface_newton.hpp"
+#include "fem/analysis/detail/line_search.hpp"
+#include "fem/analysis/detail/path_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace bipot {
 
@@ -27,264 +36,205 @@ double law_residual(const CondensedInterfaceSystem& sys, const std::vector<bool>
 }
 } // namespace
 
-bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, IncrementLog& log,
-                                                 PathStep* path, int max_iterations) {
-  const NonlinearSolverOptions& copt = model.contact_solver;
-  const int iteration_limit = max_iterations > 0 ? max_iterations : copt.max_iterations;
-  const CondensedInterfaceSystem& sys = *newton_system;
-  const Index nI = sys.num_dofs(), n = sys.size();
-  F_step.copy(F_prev);
-  F_step.scale(1.0 - lambda);
-  F_step.axpy(lambda, F_cur);
-  for (std::size_t k = 0; k < interfaces.size(); ++k) {
-    interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
-    interfaces[k]->begin_increment(extrapolation);
+struct ExactNewtonIncrement::Increment {
+  Increment(const IncrementRequest& request, const IncrementContext& ctx,
+            const CondensedInterfaceSystem& sys)
+      : lambda(request.lambda), dtau(request.dtau), path(request.path),
+        iteration_limit(request.max_iterations > 0 ? request.max_iterations
+                                                   : ctx.contact_solver.max_iterations),
+        prescribed(ctx.prescribed()), constrained_I(sys.num_dofs()),
+        test(ctx.contact_solver.tolerance), R1(ctx.dist) {
+    for (const auto& kv : ctx.target)
+      constrained_dofs.push_back(kv.first);
+    for (Index k = 0; k < sys.num_dofs(); ++k)
+      constrained_I[k] = ctx.target.count(sys.dofs()[k]) != 0;
   }
-  move_obstacles(lambda);
+  double lambda, dtau;
+  PathStep* path;
+  int iteration_limit; ///< of the Newton iterations on the interface
   std::vector<Index> constrained_dofs;
-  for (const auto& kv : target)
-    constrained_dofs.push_back(kv.first);
-  std::vector<bool> prescribed(u.size());
-  for (const auto& kv : target)
-    prescribed[kv.first] = true;
-  std::vector<bool> constrained_I(nI);
-  for (Index k = 0; k < nI; ++k)
-    constrained_I[k] = target.count(sys.dofs()[k]) != 0;
+  std::vector<bool> prescribed;    ///< over all DOFs
+  std::vector<bool> constrained_I; ///< over I
+  ConvergenceTest test;
+  Constraints constraints; ///< the prescribed increments of the current outer iteration
+  DistributedVector R1;    ///< a path's residual change per unit load factor
+};
 
-  double reference = -1.0;
-  Constraints constraints;
+void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, bool refactor) {
+  const std::vector<double>& u = ctx_.u;
+  SparseMatrix& K = ctx_.K;
+  DistributedVector &R = ctx_.R, &F_step = ctx_.F_step;
+  // R0 = F − f_int(u), the prescribed increments eliminated (first pass).
+  inc.constraints.clear();
+  for (const auto& [d, v] : ctx_.target)
+    inc.constraints.set(
+        d, outer == 0 ? ctx_.start.at(d) + inc.lambda * (v - ctx_.start.at(d)) - u[d] : 0.0);
+  // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
+  // from products with K, assembled with K at each refactorisation.
+  const bool by_product = ctx_.linear && ctx_.rigid.empty();
+  R.set_zero();
+  if (refactor) K.set_zero();
+  if (refactor && by_product)
+    bulk_product_.assemble(ctx_.solid, u, inc.constraints, K, R);
+  else if (by_product && bulk_product_.ready())
+    bulk_product_.residual(ctx_.solid, K, u, inc.constraints, R);
+  else
+    ctx_.solid.assemble(u, inc.constraints, refactor ? &K : nullptr, R);
+  R.finish_assembly();
+  if (refactor) K.finish_assembly();
+  ctx_.add_step_loads(inc.constraints);
+  if (!inc.path) return;
+  // Path-following: R is affine in the load factor (prescribed values and loads are), so
+  // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ.
+  const DistributedVector R_lambda = R;
+  const DistributedVector F_lambda = F_step;
+  Constraints ahead;
+  for (const auto& [d, v] : ctx_.target)
+    ahead.set(d, ctx_.start.at(d) + (inc.lambda + 1.0) * (v - ctx_.start.at(d)) - u[d]);
+  F_step.axpy(1.0, ctx_.F_cur);
+  F_step.axpy(-1.0, ctx_.F_prev);
+  R.set_zero();
+  if (by_product && bulk_product_.ready())
+    bulk_product_.residual(ctx_.solid, K, u, ahead, R);
+  else
+    ctx_.solid.assemble(u, ahead, nullptr, R);
+  R.finish_assembly();
+  ctx_.add_step_loads(ahead);
+  inc.R1.copy(R);
+  inc.R1.axpy(-1.0, R_lambda);
+  R.copy(R_lambda);
+  F_step.copy(F_lambda);
+}
+
+double ExactNewtonIncrement::whole_residual(const Increment& inc, double dtau) {
+  for (const auto& ia : ctx_.interfaces)
+    ia->evaluate(ctx_.u, dtau);
+  DistributedVector& whole = ctx_.du; // scratch until the back substitution
+  whole.copy(ctx_.R);
+  for (const auto& ia : ctx_.interfaces)
+    ia->add_to_system(inc.constraints, nullptr, whole);
+  whole.finish_assembly();
+  return ctx_.free_norm(whole, inc.constraints);
+}
+
+bool ExactNewtonIncrement::condense(Increment& inc, IncrementLog& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
+    // residual check after each increment would catch a K that is not.
+    schur_.factorize(ctx_.K, sys_.dofs(), ctx_.linear);
+  } catch (const SolverError& e) {
+    log.failure = e.what();
+    return false;
+  }
+  ctx_.summary.setup_seconds += seconds_since(t0);
+  ++ctx_.summary.matrix_setups;
+  schur_ready_ = true;
+  newton_matrix_.reset(); // S changed: the old Newton matrix is no preconditioner
+  schur_constrained_ = inc.constrained_dofs;
+  return true;
+}
+
+std::vector<double> ExactNewtonIncrement::expand(Increment& inc, const Eigen::VectorXd& z) {
+  const Index nI = sys_.num_dofs(), n = sys_.size();
+  const auto t0 = std::chrono::steady_clock::now();
+  if (inc.path) {
+    // At the load factor found: the residual, the loads and the right-hand side that
+    // expand() back-substitutes.
+    inc.path->dlambda = z(n);
+    inc.path->x = z.head(nI);
+    ctx_.R.axpy(z(n), inc.R1);
+    ctx_.F_step.axpy(z(n), ctx_.F_cur);
+    ctx_.F_step.axpy(-z(n), ctx_.F_prev);
+    schur_.reduce(ctx_.R);
+  }
+  schur_.expand(z.head(nI), ctx_.du);
+  ctx_.summary.solve_seconds += seconds_since(t0);
+  std::vector<double> du_all = ctx_.du.gather_all();
+  ctx_.rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
+  return du_all;
+}
+
+bool ExactNewtonIncrement::check_whole_mesh(double floor, IncrementLog& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  DistributedVector Kdu(ctx_.dist), full(ctx_.dist);
+  ctx_.K.multiply(ctx_.du, Kdu);
+  full.copy(ctx_.R);
+  full.axpy(-1.0, Kdu);
+  const Constraints fixed = ctx_.held();
+  for (const auto& ia : ctx_.interfaces)
+    ia->add_to_system(fixed, nullptr, full);
+  full.finish_assembly();
+  const double check = full.norm2();
+  ctx_.summary.assembly_seconds += seconds_since(t0);
+  if (check > 100.0 * floor) {
+    log.failure = "the condensed solution leaves a residual of " + std::to_string(check) +
+                  " on the whole mesh (tolerance " + std::to_string(floor) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& log) {
+  const NonlinearSolverOptions& copt = ctx_.contact_solver;
+  const bool linear = ctx_.linear;
+  PathStep* const path = request.path;
+  std::vector<double>& u = ctx_.u;
+  const Index nI = sys_.num_dofs(), n = sys_.size();
+  ctx_.begin_increment(request.lambda);
+  Increment inc(request, ctx_, sys_);
+  ConvergenceTest& test = inc.test;
   for (int outer = 0;; ++outer) {
-    // Bulk residual R0 = F − f_int(u), the prescribed increments eliminated (first pass).
     auto t0 = std::chrono::steady_clock::now();
-    constraints.clear();
-    for (const auto& [d, v] : target)
-      constraints.set(d, outer == 0 ? start[d] + lambda * (v - start[d]) - u[d] : 0.0);
-    const bool refactor = !schur_ready || !linear || constrained_dofs != schur_constrained;
-    // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
-    // from products with K, assembled with K at each refactorisation.
-    const bool by_product = linear && rigid.empty();
-    R.set_zero();
-    if (refactor) K->set_zero();
-    if (refactor && by_product)
-      bulk_product.assemble(solid, u, constraints, *K, R);
-    else if (by_product && bulk_product.ready())
-      bulk_product.residual(solid, *K, u, constraints, R);
-    else
-      solid.assemble(u, constraints, refactor ? K.get() : nullptr, R);
-    R.finish_assembly();
-    if (refactor) K->finish_assembly();
-    add_step_loads(constraints);
-    // Path-following: R is affine in the load factor (prescribed values and loads are), so
-    // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ.
-    DistributedVector R1(dist);
-    if (path) {
-      const DistributedVector R_lambda = R;
-      const DistributedVector F_lambda = F_step;
-      Constraints ahead;
-      for (const auto& [d, v] : target)
-        ahead.set(d, start[d] + (lambda + 1.0) * (v - start[d]) - u[d]);
-      F_step.axpy(1.0, F_cur);
-      F_step.axpy(-1.0, F_prev);
-      R.set_zero();
-      if (by_product && bulk_product.ready())
-        bulk_product.residual(solid, *K, u, ahead, R);
-      else
-        solid.assemble(u, ahead, nullptr, R);
-      R.finish_assembly();
-      add_step_loads(ahead);
-      R1.copy(R);
-      R1.axpy(-1.0, R_lambda);
-      R.copy(R_lambda);
-      F_step.copy(F_lambda);
+    const bool refactor = !schur_ready_ || !linear || inc.constrained_dofs != schur_constrained_;
+    assemble_bulk_residual(inc, outer, refactor);
+    const double full_norm = whole_residual(inc, inc.dtau);
+    ctx_.summary.assembly_seconds += seconds_since(t0);
+    if (!test.has_reference()) {
+      test.set_reference(full_norm, ctx_.F_step.norm2(), ctx_.interface_force_scale(),
+                         ctx_.reaction_scale);
+      if (test.reference() == 0.0) return true; // nothing acts on the bodies
     }
-    // The whole residual with the interface forces at u: the reference of the increment and,
-    // for a nonlinear bulk, the test of the outer loop.
-    for (const auto& ia : interfaces)
-      ia->evaluate(u, dtau);
-    du.copy(R);
-    for (const auto& ia : interfaces)
-      ia->add_to_system(constraints, nullptr, du);
-    du.finish_assembly();
-    const double full_norm = free_norm(du, constraints);
-    double force_scale = 0, roundoff = 0;
-    for (const auto& ia : interfaces) {
-      force_scale = std::max(force_scale, ia->force_scale());
-      roundoff = std::max(roundoff, ia->roundoff_force());
-    }
-    summary.assembly_seconds += seconds_since(t0);
-    if (reference < 0) {
-      reference = std::max({full_norm, F_step.norm2(), force_scale, reaction_scale});
-      if (reference == 0.0) return true; // nothing acts on the bodies
-    }
-    const double floor = std::max(copt.tolerance * reference, roundoff_factor * roundoff);
+    test.set_roundoff(ctx_.interface_roundoff());
+    const double floor = test.force_floor();
     // A nonlinear bulk: the history is that of the whole residual at each bulk state (Newton
     // on the bulk, quadratic with the consistent tangent); the inner iterations solve a
     // linearised problem exactly and their residuals say nothing about the increment.
-    if (!linear) log.history.push_back(full_norm / reference);
+    if (!linear) log.history.push_back(test.relative(full_norm));
     // The interface law at u: a damped outer step (below) leaves the multipliers between two
     // inner solutions, off the law, so the outer test and merit need it besides equilibrium.
-    const double law = law_residual(sys, constrained_I);
+    const double law = law_residual(sys_, inc.constrained_I);
     if (outer > 0) {
-      if (full_norm <= floor && law <= copt.tolerance * reference) return true;
+      if (test.forces_met(full_norm) && test.law_met(law)) return true;
       if (outer >= copt.max_iterations) {
         log.failure = "the bulk (outer) iterations did not converge in " + std::to_string(outer) +
                       " condensations";
         return false;
       }
     }
-    if (refactor) {
-      t0 = std::chrono::steady_clock::now();
-      try {
-        // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
-        // residual check after each increment would catch a K that is not.
-        schur.factorize(*K, sys.dofs(), linear);
-      } catch (const SolverError& e) {
-        log.failure = e.what();
-        return false;
-      }
-      summary.setup_seconds += seconds_since(t0);
-      ++summary.matrix_setups;
-      schur_ready = true;
-      newton_matrix.reset(); // S changed: the old Newton matrix is no preconditioner
-      schur_constrained = constrained_dofs;
-    }
+    if (refactor && !condense(inc, log)) return false;
     t0 = std::chrono::steady_clock::now();
-    const Eigen::VectorXd c1 = path ? schur.reduce(R1) : Eigen::VectorXd();
-    const Eigen::VectorXd c = schur.reduce(R);
-    summary.solve_seconds += seconds_since(t0);
-    const Eigen::MatrixXd& S = schur.schur();
+    const Eigen::VectorXd c1 = path ? schur_.reduce(inc.R1) : Eigen::VectorXd();
+    const Eigen::VectorXd c = schur_.reduce(ctx_.R);
+    ctx_.summary.solve_seconds += seconds_since(t0);
 
-    // Newton on z = (x, λ_c[, Δλ]): x the increments of I's DOFs from u, λ_c = A r the
-    // multipliers, Δλ the load factor's increment of a path-following step (one more row:
-    // its constraint).
-    const Index nz = path ? n + 1 : n;
-    std::vector<double> trial = u;
-    Eigen::VectorXd z(nz), F(nz), dz(nz), F_try(nz), grad;
-    // J = [−S 0; 0 0] + the sparse interface (and border) terms: S is not copied per iteration.
-    CondensedNewtonMatrix J(S, nz, schur.symmetric());
-    std::vector<Eigen::Triplet<double>> entries;
-    const Eigen::VectorXd lambda0 = sys.multipliers();
+    // Newton on z = (x, λ_c[, Δλ]) from x = 0 and the multipliers' predictor, or a path's
+    // predictor along its previous step.
+    InterfaceNewton newton(ctx_, sys_, inc.constrained_I, schur_.schur(), schur_.symmetric(), c, c1,
+                           path, inc.dtau);
+    const Eigen::VectorXd lambda0 = sys_.multipliers();
+    Eigen::VectorXd z(path ? n + 1 : n);
     z.head(nI).setZero();
     z.segment(nI, n - nI) = lambda0;
     if (path) {
       z.head(nI) = path->predictor_scale * path->x_prev;
       z(n) = path->predictor_scale * path->dlambda_prev;
     }
-    // The merit of the line search measures each residual in units of its own tolerance: the
-    // forces and the law to copt.tolerance × reference, the constraint to its looser
-    // constraint_tolerance(). Weighted as a force relative to the reference instead (before),
-    // the constraint, whose linearisation is poor where pairs cross β's kink, dominated the
-    // merit and the line search cut steps that reduced the forces: on rccm_traced.yaml with
-    // 100, 120 or 160 increments single traced steps took 14 to 20 iterations (5 now).
-    const double g_weight =
-        path ? copt.tolerance * reference / path->constraint_tolerance(copt.tolerance) : 0.0;
-    auto residual = [&](const Eigen::VectorXd& at, Eigen::VectorXd& out,
-                        CondensedNewtonMatrix* jac) {
-      for (Index k = 0; k < nI; ++k)
-        trial[sys.dofs()[k]] = u[sys.dofs()[k]] + at(k);
-      sys.set_multipliers(at.segment(nI, n - nI));
-      for (const auto& ia : interfaces)
-        ia->evaluate(trial, dtau);
-      out.head(nI) = c - S * at.head(nI);
-      out.tail(nz - nI).setZero();
-      entries.clear();
-      // add() touches rows and columns below n only: a bordered J and F pass as they are.
-      if (jac)
-        sys.add(constrained_I, out, entries);
-      else
-        sys.add(constrained_I, out, nullptr);
-      if (path) {
-        out.head(nI) += at(n) * c1;
-        out(n) = path->constraint(sys, at, jac ? &grad : nullptr);
-        if (jac) {
-          for (Index i = 0; i < nI; ++i)
-            entries.emplace_back(i, n, c1(i));
-          for (Index j = 0; j < nz; ++j)
-            if (grad(j) != 0.0) entries.emplace_back(n, j, grad(j));
-        }
-      }
-      if (jac) jac->set_sparse_part(entries);
-    };
-    auto merit = [&](const Eigen::VectorXd& r) {
-      return path ? std::hypot(r.head(n).norm(), g_weight * r(n)) : r.norm();
-    };
-    ReusedLuSolver& newton_solver = path ? path_matrix : newton_matrix;
-    // Single-precision factors: GMRES stays in double and meets the same tolerances, with
-    // half the bytes streamed per preconditioner application (docs/theory.md). A nonlinear
-    // bulk changes S, hence the factors, at every outer iteration: few solves per factors,
-    // and double precision keeps its inner iteration counts (and cut-backs) as they were.
-    newton_solver.set_single_precision_factors(linear);
-    for (int it = 0;; ++it, ++log.iterations) {
-      t0 = std::chrono::steady_clock::now();
-      residual(z, F, &J);
-      const double force = F.head(nI).norm(), change = sys.multiplier_residual(F);
-      const bool constraint_met =
-          !path || std::abs(F(n)) <= path->constraint_tolerance(copt.tolerance);
-      summary.assembly_seconds += seconds_since(t0);
-      if (linear) log.history.push_back(force / reference);
-      log.contact = change / reference;
-      if (force <= floor && change <= copt.tolerance * reference && constraint_met) break;
-      if (!std::isfinite(force) || !std::isfinite(change)) {
-        log.failure = "the interface residual is not finite";
-        return false;
-      }
-      if (it >= iteration_limit) {
-        log.failure = "no convergence in " + std::to_string(it) + " generalized Newton iterations";
-        return false;
-      }
-      t0 = std::chrono::steady_clock::now();
-      const int factorizations = newton_solver.factorizations();
-      // Inexact Newton (Dembo, Eisenstat & Steihaug 1982): the step need only meet
-      // ‖J dz + F‖ ≤ η ‖F‖. With η = min(1e-3, ‖F‖ / reference) the step's own error is at most
-      // the square of the relative residual, so the convergence stays quadratic, while far
-      // from the solution the GMRES on earlier factors stops much sooner (2.6× fewer GMRES
-      // iterations on the pile at 77k DOFs). Near the end η is also held to 0.1 floor / ‖F‖:
-      // the step's own error (η ‖F‖) then stays below the tolerance, so a step that would
-      // converge is not spoiled by the inexact solve. Without that cap an iteration was added
-      // on stick → slip steps of the frictional block (10k DOFs: 7, 4, 2 → 6, 4, 1 on steps 8
-      // to 10) and the Coulomb pile took 182 linear solves instead of 75. Path-following steps
-      // keep the tight solve (their constraint row has a scale of its own).
-      const double eta =
-          path ? 0.0 : std::min({1e-3, F.norm() / reference, 0.1 * floor / F.norm()});
-      dz = newton_solver.solve(J, -F, eta);
-      summary.solve_seconds += seconds_since(t0);
-      ++summary.linear_solves;
-      summary.matrix_setups += newton_solver.factorizations() - factorizations;
-      summary.linear_iterations += newton_solver.last_iterations();
-      log.linear_iterations += newton_solver.last_iterations();
-      if (!dz.allFinite()) {
-        log.failure = "the generalized Jacobian is singular";
-        return false;
-      }
-      double step = 1.0;
-      if (copt.line_search) {
-        // Backtracking on ‖F‖ (forces and multiplier residuals are both in kN). A kink of the
-        // projection can make the full step overshoot; the residual norm is cheap here.
-        t0 = std::chrono::steady_clock::now();
-        step = backtracking_step(merit(F), [&](double s) {
-          residual(z + s * dz, F_try, nullptr);
-          return merit(F_try);
-        });
-        summary.assembly_seconds += seconds_since(t0);
-      }
-      z += step * dz;
-    }
+    ReusedLuSolver& newton_solver = path ? path_matrix_ : newton_matrix_;
+    if (!newton.solve(z, test, inc.iteration_limit, newton_solver, log)) return false;
+
     // The rest of the mesh: one back substitution; then u and the interface state at z.
-    t0 = std::chrono::steady_clock::now();
-    if (path) {
-      // At the load factor found: the residual, the loads and the right-hand side that
-      // expand() back-substitutes.
-      path->dlambda = z(n);
-      path->x = z.head(nI);
-      R.axpy(z(n), R1);
-      F_step.axpy(z(n), F_cur);
-      F_step.axpy(-z(n), F_prev);
-      schur.reduce(R);
-    }
-    schur.expand(z.head(nI), du);
-    summary.solve_seconds += seconds_since(t0);
-    std::vector<double> du_all = du.gather_all();
-    rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
+    const std::vector<double> du_all = expand(inc, z);
     const Eigen::VectorXd lambda1 = z.segment(nI, n - nI);
     double step = 1.0;
     if (!linear && copt.line_search) {
@@ -295,50 +245,30 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       // Mohr-Coulomb pile did, period 3). The prescribed DOFs always take their whole
       // increment; the multipliers move along with the displacements.
       t0 = std::chrono::steady_clock::now();
-      Constraints fixed;
-      for (const auto& kv : target)
-        fixed.set(kv.first, 0.0);
+      const Constraints fixed = ctx_.held();
       std::vector<double> trial(u.size());
       step = backtracking_step(std::hypot(full_norm, law), [&](double s) {
         for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
-        sys.set_multipliers(lambda0 + s * (lambda1 - lambda0));
-        const double force = residual_norm(trial, dtau, fixed);
-        return std::hypot(force, law_residual(sys, constrained_I));
+          trial[i] = u[i] + (inc.prescribed[i] ? 1.0 : s) * du_all[i];
+        sys_.set_multipliers(lambda0 + s * (lambda1 - lambda0));
+        const double force = ctx_.residual_norm(trial, inc.dtau, fixed);
+        return std::hypot(force, law_residual(sys_, inc.constrained_I));
       });
-      summary.assembly_seconds += seconds_since(t0);
+      ctx_.summary.assembly_seconds += seconds_since(t0);
     }
     for (std::size_t i = 0; i < u.size(); ++i)
-      u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
-    sys.set_multipliers(lambda0 + step * (lambda1 - lambda0));
-    for (const auto& ia : interfaces)
-      ia->evaluate(u, dtau);
+      u[i] += (inc.prescribed[i] ? 1.0 : step) * du_all[i];
+    sys_.set_multipliers(lambda0 + step * (lambda1 - lambda0));
+    for (const auto& ia : ctx_.interfaces)
+      ia->evaluate(u, inc.dtau);
     if (!linear && path) {
       log.failure = "path-following needs a linear bulk (a bulk material is nonlinear)";
       return false;
     }
     if (!linear) continue; // re-assemble the bulk at the new state and test it
-    // Linear bulk: the condensation is exact, so the whole residual R0 − K du + f_c(u) is the
-    // interface residual up to round-off. Check it (a matrix-vector product) rather than trust it.
-    t0 = std::chrono::steady_clock::now();
-    DistributedVector Kdu(dist), full(dist);
-    K->multiply(du, Kdu);
-    full.copy(R);
-    full.axpy(-1.0, Kdu);
-    Constraints fixed;
-    for (const auto& kv : target)
-      fixed.set(kv.first, 0.0);
-    for (const auto& ia : interfaces)
-      ia->add_to_system(fixed, nullptr, full);
-    full.finish_assembly();
-    const double check = full.norm2();
-    summary.assembly_seconds += seconds_since(t0);
-    if (check > 100.0 * floor) {
-      log.failure = "the condensed solution leaves a residual of " + std::to_string(check) +
-                    " on the whole mesh (tolerance " + std::to_string(floor) + ")";
-      return false;
-    }
-    return true;
+    // Linear bulk: the condensation is exact; check it (a matrix-vector product) rather than
+    // trust it.
+    return check_whole_mesh(floor, log);
   }
 }
 

@@ -1,6 +1,6 @@
 // The constraint equation of a path-following increment (PathStep), which borders the
 // generalized Newton step of exact_newton_increment.cpp with one row.
-#include "fem/analysis/detail/static_analysis_impl.hpp"
+#include "fem/analysis/detail/path_step.hpp"
 
 namespace bipot {
 

@@ -1,6 +1,7 @@
 #include "fem/analysis/path_control.hpp"
 
-#include "fem/analysis/detail/static_analysis_impl.hpp"
+#include "fem/analysis/detail/path_step.hpp"
+#include "fem/core/error.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -143,7 +143,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         PathStep& ps = path.step(level);
         extrapolation = 0.0;
         const double dtau = path.pseudo_time_step() * stage.duration;
-        bool converged = solve_increment_exact(done, dtau, log, &ps);
+        bool converged = increment->solve({done, dtau, &ps}, log);
         if (converged && !path.forward(ps)) {
           converged = false;
           log.failure = "the step turned back along the path (its interface displacement "
@@ -178,7 +178,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
                   "factor 1"));
       } else {
         const double dtau = (lambda - done) * stage.duration;
-        // Predictor: extrapolate u (and, in solve_increment, the multipliers) along the last
+        // Predictor: extrapolate u (and, in the increment solver, the multipliers) along the last
         // converged increment of this stage. Only the starting point changes; a retry after a
         // cut-back extrapolates less. Default pile run: 529 -> 274 linear solves (with ρ
         // factor 30), and far fewer cut-backs at the debonding front.
@@ -186,7 +186,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         if (last_size > 0)
           for (std::size_t i = 0; i < u.size(); ++i)
             u[i] += extrapolation * (u[i] - u_before_last[i]);
-        bool converged = solve_increment(lambda, dtau, log, path.ramp_iterations());
+        bool converged = increment->solve({lambda, dtau, nullptr, path.ramp_iterations()}, log);
         bool beta_can_change = false;
         if (!converged && path.switch_on_failure()) {
           // A ramp that cannot follow a softening interface: dissipation control from here.
@@ -211,7 +211,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
                                         [](const auto& ia) { return ia->adhesion_can_change(); });
           if (has_contact && beta_can_change) {
             IncrementLog staggered;
-            converged = solve_increment_staggered(lambda, dtau, staggered);
+            converged = staggered_fallback->solve({lambda, dtau}, staggered);
             if (converged) {
               log = staggered;
               ++summary.staggered_increments;

@@ -1,8 +1,13 @@
 #pragma once
 /// Internal to fem/analysis: the state of a StaticAnalysis, shared by static_analysis.cpp (the
-/// stage driver and the public accessors) and increment_solver.cpp (the iterations of one
-/// increment: Newton/Uzawa, line search, the staggered fallback).
+/// stage driver and the public accessors) and the driver's other files (rigid bodies,
+/// obstacles, saved states). The increment solvers (increment_solver.hpp) see only the part
+/// of it their IncrementContext names.
 
+#include "fem/analysis/detail/increment_context.hpp"
+#include "fem/analysis/detail/increment_solver.hpp"
+#include "fem/analysis/detail/path_step.hpp"
+#include "fem/analysis/detail/staggered_increment.hpp"
 #include "fem/analysis/initial_stress.hpp"
 #include "fem/analysis/path_control.hpp"
 #include "fem/analysis/result_writer.hpp"
@@ -19,8 +24,6 @@
 #include "fem/linalg/distributed_vector.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 #include "fem/linalg/linear_solver.hpp"
-#include "fem/linalg/reused_lu_solver.hpp"
-#include "fem/linalg/schur_complement_solver.hpp"
 #include "fem/linalg/sparse_matrix.hpp"
 #include "fem/linalg/sparsity_pattern.hpp"
 
@@ -61,25 +64,6 @@ inline bool all_linear(const Model& model) {
                      [](const auto& m) { return m->is_linear(); });
 }
 
-inline double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Backtracking (Armijo) on a merit function along a Newton direction: halves the step from 1
-// up to 8 times until merit(step) < (1 − 1e-4 step) merit0. Without such a decrease, the best
-// step tried, or the full one if none helped (at a kink of the contact law the Newton
-// direction need not be a descent direction).
-template <class Merit> double backtracking_step(double merit0, Merit merit) {
-  double step = 1.0, best = merit0, best_step = 1.0;
-  for (int k = 0; k < 8; ++k) {
-    const double m = merit(step);
-    if (m < (1.0 - 1e-4 * step) * merit0) return step;
-    if (m < best) best = m, best_step = step;
-    step *= 0.5;
-  }
-  return best < merit0 ? best_step : 1.0;
-}
-
 // The whole residual history of a failed increment, for failure.log.
 inline std::string residual_history_text(const std::vector<double>& history) {
   std::ostringstream full;
@@ -90,38 +74,6 @@ inline std::string residual_history_text(const std::vector<double>& history) {
 }
 
 } // namespace analysis_detail
-
-/// One path-following increment (stage `control:` arc_length or dissipation): the load
-/// factor's increment Δλ joins the unknowns of the generalized Newton step, bordered by one
-/// constraint g(x, λ_c, Δλ) = 0 (fem/analysis/path_constraint.cpp, docs/theory.md):
-///   arc_length:  ‖x‖ = L                                (Crisfield, cylindrical)
-///   dissipation: Σ A w (β_committed − β(x)) = Δτ          (Gutiérrez 2004)
-/// x the increment of the interface DOFs, β the adhesion the law gives at the trial jumps.
-struct PathStep {
-  enum class Kind { ArcLength, Dissipation } kind = Kind::ArcLength;
-  Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
-  double dlambda_prev = 0, length = 0; ///< Δλ_prev; arc_length: L (m)
-  Eigen::VectorXd u0, f0;              ///< dissipation: at the increment's start
-  double dissipation = 0;              ///< Δτ (kJ)
-  double predictor_scale = 1;          ///< z0 = scale × (x_prev, Δλ_prev)
-  // Out: the converged increment.
-  Eigen::VectorXd x;
-  double dlambda = 0;
-
-  /// g and, with grad (size n + 1), its gradient with respect to (x, λ_c, Δλ), at z after
-  /// the interfaces were evaluated there.
-  double constraint(const CondensedInterfaceSystem& sys, const Eigen::VectorXd& z,
-                    Eigen::VectorXd* grad) const;
-  /// The constraint's own scale (L or Δτ).
-  double scale() const { return kind == Kind::ArcLength ? length : dissipation; }
-  /// |g| ≤ constraint_tolerance(tolerance) is met: √tolerance × scale(). The constraint only
-  /// picks which equilibrium of the path the step ends on, and the step's length is itself a
-  /// choice (adapted by factors of 0.6 to 1.5): the step's equilibrium and the interface law
-  /// are what the solver tolerance is for. Held to the tolerance itself, a converged
-  /// equilibrium often took one more Newton iteration for the constraint alone, and the
-  /// constraint's kinks (each pair's β = min(β_old, w/E)) made it the slowest residual.
-  double constraint_tolerance(double tolerance) const { return std::sqrt(tolerance) * scale(); }
-};
 
 struct StaticAnalysis::Impl {
   const Model& model;
@@ -151,16 +103,14 @@ struct StaticAnalysis::Impl {
   /// proportional loading) measured its residual against its own round-off and never
   /// converged.
   double reaction_scale = 0;
-  // generalized_newton: the bulk condensed onto the interface DOFs, refactorised only when
-  // the bulk tangent or the constrained DOFs change.
+  // generalized_newton: the interface equations, on the bulk condensed onto the interface
+  // DOFs (ExactNewtonIncrement), refactorised only when the bulk tangent or the constrained
+  // DOFs change.
   std::unique_ptr<CondensedInterfaceSystem> newton_system;
-  SchurComplementSolver schur;
   /// generalized_newton with a linear bulk and no rigid bodies: the bulk residual of each
   /// increment from products with the factorised K (assembled with it) instead of a cell loop.
   LinearBulkResidual bulk_product{dist};
-  ReusedLuSolver newton_matrix; ///< the dense Newton steps, factors kept across iterations
-  bool schur_ready = false;
-  std::vector<Index> schur_constrained; ///< constrained DOFs of the factorised matrix
+  bool schur_ready = false; ///< the condensed K is factorised (cleared when K is overwritten)
 
   // Boundary-condition targets of the current stage and the values they start from.
   std::map<Index, double> target, start;
@@ -219,6 +169,43 @@ struct StaticAnalysis::Impl {
     if (!m.spec.initial_stress.empty()) solid.set_initial_stress(initial_stress_function(m));
     F_prev.set_zero();
     if (has_contact) choose_augmentation();
+    make_increment_solvers();
+  }
+
+  // The increment solvers on this analysis' system: the one of the contact solver option,
+  // and the staggered fallback around it.
+  std::unique_ptr<IncrementContext> increment_context;
+  std::unique_ptr<IncrementSolver> increment, staggered_fallback;
+  void make_increment_solvers() {
+    auto obstacles_at = [this](double lambda) { move_obstacles(lambda); };
+    increment_context.reset(new IncrementContext{model.contact_solver,
+                                                 options,
+                                                 has_contact,
+                                                 linear,
+                                                 dist,
+                                                 rigid,
+                                                 solid,
+                                                 interfaces,
+                                                 *K,
+                                                 R,
+                                                 du,
+                                                 F_step,
+                                                 solver,
+                                                 matrix_ready,
+                                                 u,
+                                                 target,
+                                                 start,
+                                                 F_prev,
+                                                 F_cur,
+                                                 gap_start,
+                                                 gap_target,
+                                                 obstacles_at,
+                                                 extrapolation,
+                                                 reaction_scale,
+                                                 summary});
+    increment =
+        make_increment_solver(*increment_context, newton_system.get(), bulk_product, schur_ready);
+    staggered_fallback = std::make_unique<StaggeredIncrement>(*increment_context, *increment);
   }
 
   // ρ per pair from the bulk stiffness diagonal (one bulk assembly, before any constraint).
@@ -258,44 +245,6 @@ struct StaticAnalysis::Impl {
     add_rigid_body_loads(stage, F);
   }
 
-  struct IncrementLog {
-    int iterations = 0, linear_iterations = 0, uzawa_updates = 0, staggered = 0;
-    std::vector<double> history; ///< relative force residual per iteration
-    double contact = 0;          ///< last relative multiplier change
-    std::string failure;
-  };
-
-  // R += F_step on the DOFs `constraints` leaves free (their rows are the equilibrium).
-  void add_step_loads(const Constraints& constraints) {
-    const Index first = dist.first_owned_dof();
-    double* r = R.owned_values();
-    const double* f = F_step.owned_values();
-    for (Index i = 0; i < dist.num_owned_dofs(); ++i)
-      if (!constraints.is_constrained(first + i)) r[i] += f[i];
-  }
-
-  /// ‖v‖ over the rows `constraints` leaves free (collective): the equilibrium part of a
-  /// residual. The first pass of an increment puts diag(K) × the prescribed increment on the
-  /// constrained rows, which is no force on the body: on a footing it was 65 times the
-  /// reactions, and the increment's relative tolerance as much looser.
-  double free_norm(const DistributedVector& v, const Constraints& constraints) const {
-    const Index first = dist.first_owned_dof();
-    const double* x = v.owned_values();
-    double sum = 0;
-    for (Index i = 0; i < dist.num_owned_dofs(); ++i)
-      if (!constraints.is_constrained(first + i)) sum += x[i] * x[i];
-    return std::sqrt(sum_all(sum));
-  }
-
-  /// With `path`, `lambda` is the load factor at the increment's start and Δλ is solved for.
-  /// `max_iterations` > 0 gives up after that many Newton iterations rather than the contact
-  /// solver's own limit.
-  bool solve_increment_exact(double lambda, double dtau, IncrementLog& log,
-                             PathStep* path = nullptr, int max_iterations = 0);
-  ReusedLuSolver path_matrix; ///< the bordered Newton matrices of path-following steps
-  /// `exact_iterations`: solve_increment_exact's `max_iterations` (generalized_newton only).
-  bool solve_increment(double lambda, double dtau, IncrementLog& log, int exact_iterations = 0);
-  static constexpr double roundoff_factor = 10.0; // safety on the round-off estimate
   // Predictor of the next increment: its size over the last converged one's in this stage
   // (0 at a stage's first increment); u and the multipliers start at committed + this ×
   // (their last change). Set by the stage driver.
@@ -304,9 +253,6 @@ struct StaticAnalysis::Impl {
   // Share of gravity in the loads at the end of the previous stage and of the current one
   // (0 or 1), ramped like the loads.
   double gravity_before = 0.0, gravity_now = 0.0;
-  bool solve_increment_staggered(double lambda, double dtau, IncrementLog& log);
-  double residual_norm(const std::vector<double>& trial, double dtau,
-                       const Constraints& constraints);
   RunSummary run(const std::function<void(const StepReport&)>& on_step);
 
   // Where run() starts (analysis_state.cpp: a state loaded after `first_stage` stages) and the
