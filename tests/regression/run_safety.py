@@ -8,9 +8,11 @@ MPI rank. Used by CTest (tests/regression/CMakeLists.txt and pile/CMakeLists.txt
   unwritable  an output folder that cannot be created: a clear error before anything is solved
   ends        a run that fails (on one rank only, at 2 ranks) exits non-zero within a time limit;
               without --bad, the app itself is the run (a test driver)
-  finite      runs an input and checks that no CSV of its results holds NaN or inf
+  finite      runs an input and checks that no CSV of its results holds NaN or inf (and, with
+              --no-cutbacks, that no increment needed a cut-back)
 """
 import argparse
+import csv
 import hashlib
 import math
 import os
@@ -156,6 +158,22 @@ def check_finite(a):
     if bad:
         fail("NaN or inf in the results:\n" + "\n".join(bad[:20]))
     print(f"run_safety: {len(csvs)} CSV files, every value finite")
+    if a.no_cutbacks:
+        cut = [b for c in sorted(csvs) for b in cut_back_rows(c)]
+        if cut:
+            fail("increments that needed a cut-back (a solver change made the shipped input "
+                 "harder; see docs/testing.md):\n" + "\n".join(cut[:20]))
+        print("run_safety: no increment needed a cut-back")
+
+
+def cut_back_rows(path):
+    """Rows of a results CSV whose `cutbacks` column is not 0."""
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        if not reader.fieldnames or "cutbacks" not in reader.fieldnames:
+            return []
+        return [f"{path}:{n}: cutbacks {r['cutbacks']}" for n, r in enumerate(reader, start=2)
+                if float(r["cutbacks"]) != 0]
 
 
 def main():
@@ -169,6 +187,8 @@ def main():
     p.add_argument("--ranks", type=int, default=1)
     p.add_argument("--mpiexec", default="mpiexec")
     p.add_argument("--no-plot", action="store_true", help="pass --no-plot (the pile app)")
+    p.add_argument("--no-cutbacks", action="store_true",
+                   help="finite: also fail if an increment needed a cut-back")
     p.add_argument("--expect-code", type=int, default=3)
     p.add_argument("--expect", default=".", help="regex the failing run's stderr must match")
     p.add_argument("--expect-files", nargs="*", default=[],
