@@ -91,12 +91,22 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
   const Eigen::VectorXd x = on_interface(u) - on_interface(u_begin);
   dissipation_last_ = sys_->released_adhesion_energy(nullptr); // before the commit
   // The step that converged sets the next one's length: a traced step's own, or a shorter
-  // one after a cut-back (step() scaled it); then grown when Newton was quick, shrunk when
-  // it was slow (about 4 iterations wanted), up to 4 times the first arc length (the
-  // dissipation step never grows beyond the one asked for).
-  const double adapt = iterations >= slow_iterations ? 0.6
-                       : iterations <= 3 && may_grow ? 1.5
-                                                     : 1.0;
+  // one after a cut-back (step() scaled it); then grown when Newton was quick (≤ 3
+  // iterations), up to 4 times the first arc length (the dissipation step never grows beyond
+  // the one asked for), and shrunk when it was slow (8 or more). Halved where the path turns:
+  // the step needed more than 3 iterations and ended farther from its predictor (along the
+  // last step) than its own length, so the predictor did worse than none. The next step
+  // predicts along this one, still inside the turn; at full length it was slower still (on
+  // rccm_traced.yaml at 80 increments the step where the snap-back turns took 4 and the next,
+  // whose interface displacement grew 8 times, 6; halved it takes 5). Steps that are slow on
+  // a straight stretch keep their length: halving those as well made the column's steps
+  // uneven and cost the pile more steps.
+  const bool turned = x_prev_.size() == x.size() && mode_ != Mode::Ramp &&
+                      (x - step_->predictor_scale * x_prev_).norm() > x.norm();
+  const double adapt = iterations > quick_iterations && turned      ? 0.5
+                       : iterations >= slow_iterations              ? 0.6
+                       : iterations <= quick_iterations && may_grow ? 1.5
+                                                                    : 1.0;
   if (mode_ == Mode::ArcLength) {
     length_ = std::min(4.0 * length0_, adapt * step_->length);
   } else if (mode_ == Mode::Dissipation) {

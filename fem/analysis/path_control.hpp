@@ -51,6 +51,9 @@ public:
   int ramp_iterations() const { return can_switch() ? slow_iterations : 0; }
   /// Newton iterations from which a step counts as slow: the next traced step is shorter.
   static constexpr int slow_iterations = 8;
+  /// The most Newton iterations of a traced step after which the next one may grow; a slower
+  /// one where the path turns halves it (end_increment).
+  static constexpr int quick_iterations = 3;
   /// A converged increment from u_begin to u of Δλ in `iterations`: its dissipation, the
   /// next step's length and the control of the next increment. `may_grow` false: the next
   /// step is no longer than this one (the stage's energy budget shortened it).

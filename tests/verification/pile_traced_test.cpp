@@ -128,18 +128,20 @@ TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
   EXPECT_GE(common, 20);
 }
 
-// The shipped input with shorter dissipation steps, at the shipped tolerance: each traced step
-// converges in a few Newton iterations, not only on average. With the constraint held to the
-// solver tolerance and weighted like a force in the line search's merit, single steps took
-// 17 (100 increments) and 20 (120) iterations; 5 with the constraint held to √tolerance and
-// weighted by it (docs/theory.md, "Path-following"). A ramp increment that fails into
-// dissipation control costs at most PathControl::slow_iterations solves (it took the contact
-// solver's 50 before).
+// The shipped input (80 increments) and shorter dissipation steps, at the shipped tolerance:
+// each traced step converges in at most 5 Newton iterations (issue 11's target for the
+// unstable branch), not only on average. With the constraint held to the solver tolerance and
+// weighted like a force in the line search's merit, single steps took 17 (100 increments) and
+// 20 (120) iterations; 5 with the constraint held to √tolerance and weighted by it
+// (docs/theory.md, "Path-following"), but 6 at 80, where the step after the snap-back's turn
+// kept the length of the turn's 4-iteration step; halved, it takes 5. A ramp increment that
+// fails into dissipation control costs at most PathControl::slow_iterations solves (it took
+// the contact solver's 50 before).
 TEST(PileTraced, NoTracedStepNeedsManyIterationsWhateverTheStepLength) {
   pile::PileSpec spec =
       pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml",
                            bipot::builtin_catalogue());
-  for (int increments : {100, 120}) {
+  for (int increments : {80, 100, 120}) {
     spec.pullout.increments = increments;
     int most = 0, falling = 0;
     Attempts attempts;
@@ -153,7 +155,7 @@ TEST(PileTraced, NoTracedStepNeedsManyIterationsWhateverTheStepLength) {
                 "falling branch, %d linear solves in %d failed attempts\n",
                 increments, most, falling, attempts.failed_solves, attempts.failed);
     EXPECT_GE(falling, 3) << increments << " increments";
-    EXPECT_LE(most, 8) << increments << " increments";
+    EXPECT_LE(most, 5) << increments << " increments";
     EXPECT_GE(attempts.failed, 1) << increments << " increments";
     EXPECT_LE(attempts.failed_solves, PathControl::slow_iterations * attempts.failed)
         << increments << " increments";
