@@ -10,7 +10,7 @@
 /// viscous part is therefore the trapezoid of the driving force (β Ẽ − w)⁺ over the step times
 /// the loss β_old − β_new; (·)⁺ because β does not move while the force is below w, which also
 /// leaves the rate-independent law (β Ẽ = w on its branch) with no viscous term
-/// (docs/theory.md, "Energy balance").
+/// (docs/adhesion_dissipation.md).
 
 namespace bipot::contact {
 
