@@ -5,6 +5,8 @@
 // (docs/theory.md, "Energy balance").
 #include "contact/solver/interface_assembler.hpp"
 
+#include "contact/solver/adhesion_loss.hpp"
+
 #include "fem/core/error.hpp"
 
 namespace bipot::contact {
@@ -42,12 +44,15 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
     energy.contact_work -= 0.5 * A * (old.r + now.r).dot(dg);
     const LocalVector a = now.traction - now.r;
     energy.stored -= 0.5 * A * a.dot(now.jump);
-    // β E = −a·g / β: the driving force of the β update at the end of the step (backward
-    // Euler, as the law integrates it).
-    const double dbeta = old.beta - now.beta;
-    energy.adhesion_dissipation += A * w * dbeta;
-    if (dbeta != 0.0 && now.beta > 0)
-      energy.viscous_dissipation += A * (-a.dot(now.jump) / now.beta - w) * dbeta;
+    // β Ẽ = −a·g / β, the force that drives β down, at both ends of the step: the
+    // dissipation is its trapezoid times the loss, second order like the work terms
+    // (adhesion_loss.hpp).
+    const LocalVector a_old = old.traction - old.r;
+    const double drive_old = old.beta > 0 ? -a_old.dot(old.jump) / old.beta : 0.0;
+    const double drive_now = now.beta > 0 ? -a.dot(now.jump) / now.beta : 0.0;
+    const AdhesionLoss loss = adhesion_loss(w, old.beta, drive_old, now.beta, drive_now);
+    energy.adhesion_dissipation += A * loss.adhesion;
+    energy.viscous_dissipation += A * loss.viscous;
     // A prescribed interference moves the normal jump without moving the bodies.
     energy.interference_work -= 0.5 * A * (old.traction(0) + now.traction(0)) * dshift;
     if (iface_.obstacle)

@@ -23,7 +23,7 @@ struct EnergyTotals {
   double bulk_energy = 0;          ///< work of the internal forces (elastic energy, linear bulk)
   double interface_energy = 0;     ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
   double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost
-  double viscous_dissipation = 0;  ///< (β E − w)(β_old − β) A: adhesion's viscosity
+  double viscous_dissipation = 0;  ///< mean (β Ẽ − w)⁺ of the step × (β_old − β) A
   double contact_work = 0;         ///< of the irreversible traction r: friction (and contact)
   /// external + interference − (bulk + interface + adhesion + viscous + contact).
   double balance_error() const;
