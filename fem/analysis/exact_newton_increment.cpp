@@ -185,7 +185,7 @@ bool StaticAnalysis::Impl::solve_increment_exact(double lambda, double dtau, Inc
       sys.set_multipliers(at.segment(nI, n - nI));
       for (const auto& ia : interfaces)
         ia->evaluate(trial, dtau);
-      out.head(nI) = c - S * at.head(nI);
+      out.head(nI) = c - J.dense_product(at.head(nI)); // shared by the ranks
       out.tail(nz - nI).setZero();
       entries.clear();
       // add() touches rows and columns below n only: a bordered J and F pass as they are.
