@@ -53,12 +53,21 @@ Index sum_all(Index local) {
   return global;
 }
 
-void sum_all(double* values, Index count) {
+namespace {
+void sum_in_place(void* values, Index count, MPI_Datatype type) {
   if (!mpi_active() || mpi_size() == 1 || count == 0) return;
   if (count > std::numeric_limits<int>::max()) throw Error("sum_all: too many values for MPI");
-  check(MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), MPI_DOUBLE, MPI_SUM,
-                      MPI_COMM_WORLD),
+  check(MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), type, MPI_SUM, MPI_COMM_WORLD),
         "sum_all (values)");
+}
+} // namespace
+
+void sum_all(double* values, Index count) {
+  sum_in_place(values, count, MPI_DOUBLE);
+}
+
+void sum_all(float* values, Index count) {
+  sum_in_place(values, count, MPI_FLOAT);
 }
 
 double max_all(double local) {

@@ -27,6 +27,8 @@ double min_all(double local);
 /// rank passes the same count). All ranks receive the same sums, bit for bit, so ranks that
 /// branch on them stay in step.
 void sum_all(double* values, Index count);
+/// The same in single precision (the sums of single-precision factors' substitutions).
+void sum_all(float* values, Index count);
 /// Blocks until every rank has arrived (collective).
 void barrier();
 

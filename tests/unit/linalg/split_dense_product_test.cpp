@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace bipot {
@@ -97,6 +98,8 @@ TEST(SplitDenseProduct, CollectiveProductIsTheSerialOneOnEveryRank) {
     const SplitDenseProduct split(S, symmetric);
     EXPECT_EQ(split.ranks(), mpi_size());
     const Eigen::VectorXd y = split.product(x);
+    std::printf("symmetric %d, rank %d of %d: |Sx - serial| / |serial| = %.1e\n", symmetric,
+                mpi_rank(), mpi_size(), (y - reference).norm() / reference.norm());
     EXPECT_LE((y - reference).norm(), 1e-12 * reference.norm()) << "symmetric " << symmetric;
     // The same bits on every rank (the ranks branch on these numbers in step).
     for (Index i = 0; i < m; i += 16) {
