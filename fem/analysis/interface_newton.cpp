@@ -16,8 +16,8 @@ InterfaceNewton::InterfaceNewton(IncrementContext& context, const CondensedInter
                                  const std::vector<bool>& constrained_I, const Eigen::MatrixXd& S,
                                  bool symmetric_S, const Eigen::VectorXd& c,
                                  const Eigen::VectorXd& c1, PathStep* path, double dtau)
-    : ctx_(context), sys_(system), constrained_I_(constrained_I), S_(S), c_(c), c1_(c1),
-      path_(path), dtau_(dtau), nI_(system.num_dofs()), n_(system.size()), nz_(path ? n_ + 1 : n_),
+    : ctx_(context), sys_(system), constrained_I_(constrained_I), c_(c), c1_(c1), path_(path),
+      dtau_(dtau), nI_(system.num_dofs()), n_(system.size()), nz_(path ? n_ + 1 : n_),
       J_(S, nz_, symmetric_S), trial_(context.u) {}
 
 void InterfaceNewton::residual(const Eigen::VectorXd& at, Eigen::VectorXd& out,
@@ -28,7 +28,7 @@ void InterfaceNewton::residual(const Eigen::VectorXd& at, Eigen::VectorXd& out,
   sys_.set_multipliers(at.segment(nI_, n_ - nI_));
   for (const auto& ia : ctx_.interfaces)
     ia->evaluate(trial_, dtau_);
-  out.head(nI_) = c_ - S_ * at.head(nI_);
+  out.head(nI_) = c_ - J_.dense_product(at.head(nI_)); // shared by the ranks
   out.tail(nz_ - nI_).setZero();
   entries_.clear();
   // add() touches rows and columns below n only: a bordered J and F pass as they are.

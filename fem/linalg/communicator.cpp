@@ -4,6 +4,8 @@
 
 #include <mpi.h>
 
+#include <limits>
+
 namespace bipot {
 
 namespace {
@@ -49,6 +51,23 @@ Index sum_all(Index local) {
   std::int64_t global = 0;
   check(MPI_Allreduce(&in, &global, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD), "sum_all");
   return global;
+}
+
+namespace {
+void sum_in_place(void* values, Index count, MPI_Datatype type) {
+  if (!mpi_active() || mpi_size() == 1 || count == 0) return;
+  if (count > std::numeric_limits<int>::max()) throw Error("sum_all: too many values for MPI");
+  check(MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), type, MPI_SUM, MPI_COMM_WORLD),
+        "sum_all (values)");
+}
+} // namespace
+
+void sum_all(double* values, Index count) {
+  sum_in_place(values, count, MPI_DOUBLE);
+}
+
+void sum_all(float* values, Index count) {
+  sum_in_place(values, count, MPI_FLOAT);
 }
 
 double max_all(double local) {

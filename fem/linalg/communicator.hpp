@@ -23,6 +23,12 @@ Index sum_all(Index local);
 double max_all(double local);
 /// Minimum over all ranks (collective).
 double min_all(double local);
+/// Replaces values[0, count) on every rank by their sums over all ranks (collective; every
+/// rank passes the same count). All ranks receive the same sums, bit for bit, so ranks that
+/// branch on them stay in step.
+void sum_all(double* values, Index count);
+/// The same in single precision (the sums of single-precision factors' substitutions).
+void sum_all(float* values, Index count);
 /// Blocks until every rank has arrived (collective).
 void barrier();
 

@@ -3,7 +3,7 @@
 namespace bipot {
 
 CondensedNewtonMatrix::CondensedNewtonMatrix(const Eigen::MatrixXd& S, Index n, bool symmetric_S)
-    : S_(&S), n_(n), symmetric_(symmetric_S), P_(n, n) {}
+    : S_(&S), n_(n), symmetric_(symmetric_S), split_(S, symmetric_S), P_(n, n) {}
 
 void CondensedNewtonMatrix::set_sparse_part(const std::vector<Eigen::Triplet<double>>& entries) {
   P_.setFromTriplets(entries.begin(), entries.end());

@@ -1,8 +1,11 @@
 #include "fem/linalg/reused_lu_solver.hpp"
 
+#include "fem/linalg/communicator.hpp"
+
 #include <unsupported/Eigen/IterativeSolvers>
 
 #include <algorithm>
+#include <type_traits>
 
 namespace bipot::detail {
 class CondensedOperator;
@@ -68,6 +71,9 @@ struct EarlierFactors {
   enum { ColsAtCompileTime = Eigen::Dynamic, MaxColsAtCompileTime = Eigen::Dynamic };
   const Factors* lu = nullptr;
   const SingleFactors* lu_single = nullptr; // used if set
+  // The substitutions shared by the ranks (several ranks, J in operator form), if set.
+  const SplitTriangularSolve<double>* split = nullptr;
+  const SplitTriangularSolve<float>* split_single = nullptr;
 
   EarlierFactors() = default;
   template <class M> explicit EarlierFactors(const M&) {}
@@ -75,7 +81,17 @@ struct EarlierFactors {
   template <class M> EarlierFactors& factorize(const M&) { return *this; }
   template <class M> EarlierFactors& compute(const M&) { return *this; }
   template <class R> Eigen::VectorXd solve(const Eigen::MatrixBase<R>& b) const {
+    if (lu_single && split_single) {
+      Eigen::VectorXf x = lu_single->permutationP() * b.template cast<float>();
+      split_single->solve_in_place(x);
+      return x.cast<double>();
+    }
     if (lu_single) return lu_single->solve(b.template cast<float>()).template cast<double>();
+    if (split) {
+      Eigen::VectorXd x = lu->permutationP() * b;
+      split->solve_in_place(x);
+      return x;
+    }
     return lu->solve(b);
   }
   Eigen::ComputationInfo info() const { return Eigen::Success; }
@@ -105,14 +121,21 @@ template <class Matrix> void ReusedLuSolver::factorize(const Matrix& J, bool sin
   // The LU objects refer to the arrays, which may be reallocated; only one precision is kept.
   lu_.reset();
   lu_single_.reset();
+  split_.reset();
+  split_single_.reset();
+  // J in operator form is what the ranks solve together (generalized_newton): its products
+  // are collective already, so the substitutions can be too. A dense J may be a rank's own.
+  const bool shared = std::is_same_v<Matrix, CondensedNewtonMatrix> && mpi_size() > 1;
   if (single) {
     factors_.resize(0, 0);
     make_dense(J, factors_single_);
     lu_single_ = std::make_unique<SingleFactors>(factors_single_);
+    if (shared) split_single_ = std::make_unique<SplitTriangularSolve<float>>(factors_single_);
   } else {
     factors_single_.resize(0, 0);
     make_dense(J, factors_);
     lu_ = std::make_unique<Factors>(factors_);
+    if (shared) split_ = std::make_unique<SplitTriangularSolve<double>>(factors_);
   }
   factor_rows_ = J.rows();
   factorized_ = true;
@@ -159,6 +182,11 @@ bool ReusedLuSolver::refine(const Matrix& J, const Eigen::VectorXd& b, double ac
   gmres.compute(op);
   gmres.preconditioner().lu = lu_.get();
   gmres.preconditioner().lu_single = lu_single_.get();
+  // Shared substitutions only where the products are shared (a dense J may be one rank's).
+  if constexpr (std::is_same_v<Matrix, CondensedNewtonMatrix>) {
+    gmres.preconditioner().split = split_.get();
+    gmres.preconditioner().split_single = split_single_.get();
+  }
   // Eigen's GMRES stops on the preconditioned residual; the true one (one product to check)
   // is larger by up to the conditioning of the earlier factors: 1e-12 became 1e-10 to 1e-8 on
   // the pile's matrices. A GMRES solve of the true residual (iterative refinement) recovers

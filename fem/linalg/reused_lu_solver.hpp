@@ -4,6 +4,7 @@
 /// slip, open) or whose β moved change their rows between iterations and increments.
 
 #include "fem/linalg/condensed_newton_matrix.hpp"
+#include "fem/linalg/split_triangular_solve.hpp"
 
 #include <Eigen/Dense>
 
@@ -20,6 +21,10 @@ namespace bipot {
 /// refinement, up to three passes). J is factorised afresh when there are no factors yet or
 /// when that fails (GMRES not converged in `max_iterations`, or the residual not shrinking:
 /// the factors are too far off); the factors are then kept for the next solves.
+///
+/// With several MPI ranks and J in operator form (CondensedNewtonMatrix, whose products are
+/// shared by the ranks) the preconditioner's substitutions are shared too
+/// (SplitTriangularSolve); solve() is then collective. The factorisation stays on every rank.
 ///
 /// With single-precision factors (set_single_precision_factors) the preconditioner streams
 /// half the bytes and the factorisation is about twice as fast; GMRES, the products with J
@@ -79,6 +84,10 @@ private:
   Eigen::MatrixXf factors_single_;
   std::unique_ptr<Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXd>>> lu_;
   std::unique_ptr<Eigen::PartialPivLU<Eigen::Ref<Eigen::MatrixXf>>> lu_single_;
+  // With several ranks and J in operator form: GMRES' preconditioner substitutes on shared
+  // tiles of the factors (each rank reads 1/ranks of them).
+  std::unique_ptr<SplitTriangularSolve<double>> split_;
+  std::unique_ptr<SplitTriangularSolve<float>> split_single_;
   Eigen::Index factor_rows_ = 0;
   bool factorized_ = false;
   int factorizations_ = 0, iterations_ = 0, last_iterations_ = 0;

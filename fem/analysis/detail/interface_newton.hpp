@@ -50,7 +50,6 @@ private:
   IncrementContext& ctx_;
   const CondensedInterfaceSystem& sys_;
   const std::vector<bool>& constrained_I_;
-  const Eigen::MatrixXd& S_;
   const Eigen::VectorXd &c_, &c1_;
   PathStep* path_;
   double dtau_;

@@ -201,6 +201,46 @@ TEST(ReusedLuSolver, OperatorFormStopsAtTheForcingTerm) {
   }
 }
 
+// n = 600: three tiles of the substitutions, so with 2 ranks GMRES' preconditioner runs on
+// factors shared by the ranks (SplitTriangularSolve). A change of rank k in P is still solved
+// on the old factors in about k + 1 iterations; a wrong shared substitution would need ~n
+// iterations and a new factorisation.
+TEST(ReusedLuSolver, SharedSubstitutionsPreconditionAsTheWholeFactors) {
+  const int m = 400, n = 600, k = 5;
+  Eigen::MatrixXd S = test_matrix(m, 14);
+  S = -(S + S.transpose()).eval(); // symmetric, as a linear bulk's
+  const CondensedNewtonMatrix P0 = condensed(S, n, 15, 1.0);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < P0.sparse_part().outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(P0.sparse_part(), c); it; ++it)
+      entries.emplace_back(it.row(), it.col(), it.value());
+  CondensedNewtonMatrix J0(S, n, true), J1(S, n, true);
+  J0.set_sparse_part(entries);
+  for (int i = 0; i < k; ++i) // k rows change (pairs switching status)
+    entries.emplace_back(m + 37 * i, 11 * i, 5.0 + i);
+  J1.set_sparse_part(entries);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (const bool single : {true, false}) {
+    ReusedLuSolver solver;
+    solver.set_single_precision_factors(single);
+    solver.solve(J0, b, 1e-11);
+    const Eigen::VectorXd x = solver.solve(J1, b, 1e-11);
+    Eigen::MatrixXd dense;
+    J1.to_dense(dense);
+    const Eigen::VectorXd exact = dense.partialPivLu().solve(b);
+    std::printf("shared substitutions (%s factors): %d GMRES iterations, |x - exact| / |exact| = "
+                "%.1e\n",
+                single ? "single" : "double", solver.last_iterations(),
+                (x - exact).norm() / exact.norm());
+    EXPECT_EQ(solver.factorizations(), 1) << single;
+    // Rank k: k + 1 iterations in exact arithmetic, one more for the float factors' error (a
+    // substitution missing one rank's tiles took 15 and 29 here).
+    EXPECT_LE(solver.last_iterations(), k + 2) << single;
+    EXPECT_LT(relative_residual(dense, x, b), 1e-11) << single;
+    EXPECT_LE((x - exact).norm(), 1e-10 * exact.norm()) << single;
+  }
+}
+
 TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
   const int m = 120, n = 180;
   const Eigen::MatrixXd S = -test_matrix(m, 5);
