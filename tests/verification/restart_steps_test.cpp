@@ -1,11 +1,11 @@
 // Restart from checkpoints within a stage (StaticAnalysis::save_step_state after an
 // increment): continued from any planned step, the run gives the uninterrupted run's results
-// to 1e-12 — reactions, the interface resultant and smallest β, the energy balance and the
-// largest equivalent plastic strain of every later increment, the final displacements and
-// cell fields — and takes the same steps: the restarted run's cut-backs equal those the
-// uninterrupted run made after the checkpoint (counted from its reports). The model carries
-// every kind of mid-stage state: a von Mises block (plastic strains), RCCM adhesion β, a law
-// change by the last stage (ρ kept), and a checkpoint taken while an earlier cut-back still
+// to 1e-12 (across rank counts 1e-10) — reactions, the interface resultant and smallest β, the
+// energy balance and the largest equivalent plastic strain of every later increment, the final
+// displacements and cell fields — and takes the same steps: the restarted run's cut-backs equal
+// those the uninterrupted run made after the checkpoint (counted from its reports). The model
+// carries every kind of mid-stage state: a von Mises block (plastic strains), RCCM adhesion β, a
+// law change by the last stage (ρ kept), and a checkpoint taken while an earlier cut-back still
 // shortens the increments (cut-back level > 0). The last checkpoint also restarts at another
 // rank count through its file.
 #include "apps/catalogue/builtin_catalogue.hpp"
@@ -99,10 +99,10 @@ double largest_magnitude(const std::vector<double>& v) {
   return m;
 }
 
-// `continued` against the increments of `whole` after the first `skip`, each column to 1e-12
+// `continued` against the increments of `whole` after the first `skip`, each column to `rel`
 // of its largest magnitude over the whole run (the reactions: of the largest reaction).
 void expect_continues(const Steps& whole, const Steps& continued, std::size_t skip,
-                      const std::string& what) {
+                      const std::string& what, double rel = 1e-12) {
   ASSERT_EQ(continued.rows.size(), whole.rows.size() - skip) << what;
   for (std::size_t c = 0; c < whole.rows[0].size(); ++c) {
     // The reactions (columns 4-7) share one scale: an unsupported set's is round-off.
@@ -112,7 +112,7 @@ void expect_continues(const Steps& whole, const Steps& continued, std::size_t sk
       for (std::size_t j = first; j < last; ++j)
         scale = std::max(scale, std::abs(row[j]));
     for (std::size_t k = 0; k < continued.rows.size(); ++k)
-      EXPECT_NEAR(continued.rows[k][c], whole.rows[skip + k][c], 1e-12 * scale)
+      EXPECT_NEAR(continued.rows[k][c], whole.rows[skip + k][c], rel * scale)
           << what << ": increment " << skip + k + 1 << ", column " << c;
   }
   int after = 0;
@@ -123,7 +123,7 @@ void expect_continues(const Steps& whole, const Steps& continued, std::size_t sk
     const double scale = largest_magnitude(whole.*v);
     ASSERT_EQ((continued.*v).size(), (whole.*v).size());
     for (std::size_t i = 0; i < (whole.*v).size(); ++i)
-      EXPECT_NEAR((continued.*v)[i], (whole.*v)[i], 1e-12 * scale) << what << ": value " << i;
+      EXPECT_NEAR((continued.*v)[i], (whole.*v)[i], rel * scale) << what << ": value " << i;
   }
 }
 
@@ -181,8 +181,12 @@ TEST(RestartWithinStage, ContinuesLikeTheUninterruptedRunFromEveryPlannedStep) {
   if (const char* other = std::getenv("BIPOT_RESTART_FROM")) {
     StaticAnalysis across(model);
     across.load_state(read_checkpoint(other, hash));
+    // Another rank count sums the dense products in another order (they are shared by the
+    // ranks), so the state it saved and the iterates after it differ by round-off, and Newton
+    // stops anywhere below the tolerance (1e-11): 1.3e-12 of a column's scale was seen. The
+    // same steps and cut-backs are still required.
     expect_continues(whole, record(across), saved.back().increments,
-                     std::string("restart from ") + other);
+                     std::string("restart from ") + other, 1e-10);
   }
 }
 
