@@ -19,10 +19,17 @@ std::string plural(int n, const std::string& one, const std::string& many) {
 
 // Only for a run that controlled its energy balance (a stage with energy_tolerance).
 std::string energy_summary(const RunSummary& s) {
-  if (s.energy_halvings == 0 && s.over_energy_budget == 0 && s.worst_controlled_energy_error == 0)
+  if (s.energy_halvings == 0 && s.over_energy_budget == 0 && s.worst_controlled_energy_error == 0 &&
+      s.worst_energy_error == 0)
     return "";
-  char worst[32];
-  std::snprintf(worst, sizeof worst, "%.2g", s.worst_controlled_energy_error);
+  // Both worsts: energy.csv's (every error) and the controlled one, which leaves out the
+  // errors of the increments kept over the budget; printing only the latter hid them.
+  char worst[96];
+  if (s.over_energy_budget > 0)
+    std::snprintf(worst, sizeof worst, "%.2g (%.2g leaving out those increments' own errors)",
+                  s.worst_energy_error, s.worst_controlled_energy_error);
+  else
+    std::snprintf(worst, sizeof worst, "%.2g", s.worst_energy_error);
   return "; energy_tolerance: " + plural(s.energy_halvings, "halving", "halvings") + ", " +
          plural(s.over_energy_budget, "increment", "increments") +
          " kept over it, worst balance error " + worst + " of the work put in";

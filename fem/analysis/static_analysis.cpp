@@ -331,6 +331,9 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       if (energy_control.active())
         summary.worst_controlled_energy_error = std::max(
             summary.worst_controlled_energy_error, energy_control.controlled_error(rep.energy));
+      if (energy_control.active())
+        summary.worst_energy_error =
+            std::max(summary.worst_energy_error, std::abs(rep.energy.relative_error()));
       rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
       rep.requested_output = !rep.traced && lambda == next_level &&
                              (asked_first || std::binary_search(stage.output_at.begin(),

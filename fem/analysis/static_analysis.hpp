@@ -102,6 +102,8 @@ struct RunSummary {
   /// Largest |balance error| / work put in after an increment of a stage with an
   /// energy_tolerance, the excused errors of flagged increments left out.
   double worst_controlled_energy_error = 0;
+  /// The same with every error counted (energy.csv's largest relative_error in those stages).
+  double worst_energy_error = 0;
   double failed_seconds = 0; ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time

@@ -1,0 +1,37 @@
+// The closing summary's account of the energy step control: the worst balance error it prints
+// is energy.csv's (every error counted); when increments were kept over the budget, the
+// controlled worst (their own errors left out) is given beside it, never instead of it.
+#include "apps/common/step_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace bipot::app {
+namespace {
+
+RunSummary controlled_run(int kept_over) {
+  RunSummary s;
+  s.steps = 2311;
+  s.sub_increments = 2228;
+  s.energy_halvings = 14;
+  s.over_energy_budget = kept_over;
+  s.worst_energy_error = 1.56e-6;
+  s.worst_controlled_energy_error = 6.8e-7;
+  return s;
+}
+
+TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
+  const std::string kept = stepping_summary(controlled_run(363), "app");
+  EXPECT_NE(kept.find("363 increments kept over it"), std::string::npos) << kept;
+  EXPECT_NE(kept.find("worst balance error 1.6e-06 (6.8e-07 leaving out"), std::string::npos)
+      << kept;
+  const std::string none = stepping_summary(controlled_run(0), "app");
+  EXPECT_NE(none.find("worst balance error 1.6e-06 of the work put in"), std::string::npos) << none;
+  EXPECT_EQ(none.find("6.8e-07"), std::string::npos) << none;
+  // A run without the control says nothing of it.
+  EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
+}
+
+} // namespace
+} // namespace bipot::app
