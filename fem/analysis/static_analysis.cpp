@@ -328,12 +328,12 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.energy_halvings = energy_halvings;
       rep.over_energy_budget = energy_verdict == EnergyStepControl::Verdict::OverBudget;
       if (rep.over_energy_budget) ++summary.over_energy_budget;
-      if (energy_control.active())
+      if (energy_control.active()) {
         summary.worst_controlled_energy_error = std::max(
             summary.worst_controlled_energy_error, energy_control.controlled_error(rep.energy));
-      if (energy_control.active())
         summary.worst_energy_error =
             std::max(summary.worst_energy_error, std::abs(rep.energy.relative_error()));
+      }
       rep.planned_step = lambda == next_level && !asked_first && !rep.traced ? next_k : 0;
       rep.requested_output = !rep.traced && lambda == next_level &&
                              (asked_first || std::binary_search(stage.output_at.begin(),
