@@ -205,7 +205,9 @@ void LinearSolver::setup(const SparseMatrix& matrix) {
   const auto& o = options_;
   try {
     if (o.method == "direct") {
-      if (!im.direct) im.direct = std::make_unique<detail::RootedDirectSolver>(o.factorization);
+      if (!im.direct)
+        im.direct =
+            std::make_unique<detail::RootedDirectSolver>(o.factorization, factor_directory(o));
       im.direct->factorize(im.A); // reuses the gathered structure for the same matrix
     } else if (o.preconditioner == "muelu") {
       if (same_matrix && !im.muelu.is_null() && !im.nns_changed &&
@@ -251,7 +253,8 @@ void LinearSolver::setup(const SparseMatrix& matrix) {
       const bool worn = o.lu_refresh > 0 ? im.lu_iterations >= o.lu_refresh
                                          : im.lu_stale_seconds >= im.lu_factor_seconds;
       if (im.lu.is_null() || !same_matrix || worn) {
-        if (im.lu.is_null()) im.lu = Teuchos::rcp(new detail::LuPreconditioner(o.factorization));
+        if (im.lu.is_null())
+          im.lu = Teuchos::rcp(new detail::LuPreconditioner(o.factorization, factor_directory(o)));
         im.factorize_lu();
       } else {
         im.lu_current = false;

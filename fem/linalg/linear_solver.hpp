@@ -23,10 +23,15 @@ struct LinearSolverOptions {
   int restart = 200;                    ///< GMRES Krylov subspace size before a restart
   int amg_coarse_size = 1000;           ///< MueLu: stop coarsening below this many rows
   std::string factorization = "mumps";  ///< direct and lu: mumps | klu2 (sparse LU package)
-  int lu_refresh = 0;   ///< lu: refactorise after this many GMRES iterations on old factors;
-                        ///< 0 = once the time spent on them reaches one factorisation's
-  bool verbose = false; ///< print Krylov convergence history (rank 0)
+  int lu_refresh = 0;       ///< lu: refactorise after this many GMRES iterations on old factors;
+                            ///< 0 = once the time spent on them reaches one factorisation's
+  bool verbose = false;     ///< print Krylov convergence history (rank 0)
+  bool out_of_core = false; ///< MUMPS factors in files in the temporary directory
 };
+
+/// Where MUMPS writes its factors under these options: the system's temporary directory
+/// (TMPDIR) if `out_of_core`, else "" (in memory).
+std::string factor_directory(const LinearSolverOptions& options);
 
 /// Outcome of LinearSolver::solve().
 struct LinearSolveStats {

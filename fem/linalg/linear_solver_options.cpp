@@ -2,6 +2,8 @@
 // editing docs or defaults does not recompile the Belos/MueLu translation unit.
 #include "fem/linalg/linear_solver.hpp"
 
+#include <filesystem>
+
 namespace bipot {
 
 ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
@@ -51,6 +53,13 @@ ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
       .at_least(0)
       .defaulted();
   s.boolean("verbose", &O::verbose, "Print the Krylov convergence history").defaulted();
+  s.boolean("out_of_core", &O::out_of_core,
+            "MUMPS writes its factors (generalized_newton's condensed bulk, `direct`, "
+            "`lu`) to files in the temporary directory (TMPDIR) instead of keeping them in "
+            "memory, for models whose factors do not fit (the pile at 307k DOFs: peak memory "
+            "794 -> 533 MB, docs/performance_solver_engine.md); the files are deleted with "
+            "the solver")
+      .defaulted();
   s.rule("preconditioner",
          "preconditioner `lu` needs method `gmres`: old LU factors are a nonsymmetric "
          "preconditioner, on which CG breaks down (and `direct` takes no preconditioner)",
@@ -60,6 +69,10 @@ ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
                   "': old LU factors are a nonsymmetric preconditioner";
          });
   return s;
+}
+
+std::string factor_directory(const LinearSolverOptions& options) {
+  return options.out_of_core ? std::filesystem::temp_directory_path().string() : std::string();
 }
 
 } // namespace bipot

@@ -42,6 +42,10 @@ void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<I
   setup_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+void SchurComplementSolver::set_factor_directory(const std::string& directory) {
+  impl_->direct.set_factor_directory(directory);
+}
+
 Eigen::VectorXd SchurComplementSolver::reduce(const DistributedVector& b) {
   const std::vector<double> c = impl_->direct.reduce(b.owned_values());
   return Eigen::Map<const Eigen::VectorXd>(c.data(), static_cast<Index>(c.size()));

@@ -4,6 +4,7 @@
 #include "fem/core/types.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bipot {
@@ -36,6 +37,11 @@ public:
   /// its lower triangle, with half the factors (memory, factorisation, reduce and expand).
   void factorize(const SparseMatrix& A, const std::vector<Index>& schur_dofs,
                  bool symmetric = false);
+
+  /// The factors of A_BB written to files in `directory` (MUMPS out of core) from the next
+  /// factorize() on, instead of kept in memory: for models whose factors do not fit. Empty:
+  /// in memory (the default). The files go when the solver does.
+  void set_factor_directory(const std::string& directory);
 
   /// The DOFs of I in the order of schur() rows and columns (sorted).
   const std::vector<Index>& schur_dofs() const { return dofs_; }

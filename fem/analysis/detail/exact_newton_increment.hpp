@@ -26,7 +26,9 @@ public:
   /// unconstrained bulk). `bulk_product` gives a linear bulk's residual from products with K.
   ExactNewtonIncrement(IncrementContext& context, const CondensedInterfaceSystem& system,
                        LinearBulkResidual& bulk_product, bool& schur_ready)
-      : ctx_(context), sys_(system), bulk_product_(bulk_product), schur_ready_(schur_ready) {}
+      : ctx_(context), sys_(system), bulk_product_(bulk_product), schur_ready_(schur_ready) {
+    schur_.set_factor_directory(factor_directory(ctx_.solver.options()));
+  }
   bool solve(const IncrementRequest& request, IncrementLog& log) override;
 
 private:

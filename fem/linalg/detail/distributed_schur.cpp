@@ -5,6 +5,7 @@
 
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "fem/linalg/detail/mumps_out_of_core.hpp"
 
 #include <dmumps_c.h>
 #include <mpi.h>
@@ -35,7 +36,8 @@ struct DistributedSchur::Impl {
   std::vector<double> values, schur, rhs, redrhs;
   std::vector<int> owned_counts, owned_offsets; ///< rows per rank, for b and x
   bool initialised = false;
-  bool symmetric = false; ///< the instance factorises LDLᵀ (SYM = 2)
+  bool symmetric = false;       ///< the instance factorises LDLᵀ (SYM = 2)
+  std::string factor_directory; ///< out-of-core factors there (empty: in memory)
 
   // MUMPS fixes SYM when an instance is created (JOB = -1): another symmetry needs a new one.
   // General unsymmetric by default (friction makes a contact tangent unsymmetric); a
@@ -147,6 +149,7 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
   if (im.source.get() != A.get() || im.schur_dofs != schur_dofs || im.symmetric != symmetric) {
     im.source = Teuchos::null; // not reusable if the analysis throws
     if (im.symmetric != symmetric) im.create(symmetric);
+    set_mumps_out_of_core(im.id, im.factor_directory);
     im.schur_dofs = schur_dofs;
     im.analyse(*A);
     im.source = A;
@@ -191,6 +194,13 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
   }
   im.schur.resize(m * m);
   MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+void DistributedSchur::set_factor_directory(const std::string& directory) {
+  auto& im = *impl_;
+  if (directory == im.factor_directory) return;
+  im.factor_directory = directory;
+  im.source = Teuchos::null; // analysed for the other storage: analyse again
 }
 
 std::vector<double> DistributedSchur::take_schur() {

@@ -5,6 +5,7 @@
 #include "fem/linalg/detail/tpetra_types.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bipot::detail {
@@ -30,6 +31,10 @@ public:
   void factorize(const Teuchos::RCP<CrsMatrix>& A, const std::vector<long long>& schur_dofs,
                  bool symmetric = false);
   std::vector<double> take_schur();
+  /// The factors of the next factorize() are written to files in `directory` (MUMPS
+  /// out-of-core, ICNTL(22)) instead of kept in memory; empty: in memory (the default).
+  /// A change takes effect with a new analysis.
+  void set_factor_directory(const std::string& directory);
   /// b_I − A_IB A_BB⁻¹ b_B on every rank, for the owned block of b; keeps the partial
   /// solution (on rank 0) for the next expand().
   std::vector<double> reduce(const double* b_owned);

@@ -14,7 +14,8 @@ namespace bipot::detail {
 class LuPreconditioner : public Operator {
 public:
   /// `package`: the sparse LU to use, "mumps" or "klu2".
-  explicit LuPreconditioner(const std::string& package) : lu_(package) {}
+  LuPreconditioner(const std::string& package, const std::string& factor_directory)
+      : lu_(package, factor_directory) {}
 
   /// Factorises A (collective) and takes its row map as domain and range.
   void factorize(const Teuchos::RCP<CrsMatrix>& A);

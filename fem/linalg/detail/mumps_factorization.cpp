@@ -2,6 +2,7 @@
 // matrices with BLAS-3 kernels and a nested-dissection-type ordering, which on our 2D meshes
 // factorises 3 times faster than KLU2's column-by-column LU at 78k DOFs and 10 times at 306k
 // (with OpenBLAS; docs/performance.md).
+#include "fem/linalg/detail/mumps_out_of_core.hpp"
 #include "fem/linalg/detail/root_factorization.hpp"
 
 #include <dmumps_c.h>
@@ -30,7 +31,7 @@ std::string mumps_error(int code, int detail) {
 
 class MumpsFactorization final : public RootFactorization {
 public:
-  MumpsFactorization() {
+  explicit MumpsFactorization(const std::string& factor_directory) {
     id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
     id_.par = 1; // this process works (there is only one)
     id_.sym = 0; // general unsymmetric: friction makes the contact tangent unsymmetric
@@ -41,6 +42,7 @@ public:
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[6] = 7; // ICNTL(7): ordering chosen by MUMPS from those it was built with
+    set_mumps_out_of_core(id_, factor_directory);
   }
   ~MumpsFactorization() override {
     id_.job = -2; // free MUMPS' memory; errors here cannot be reported
@@ -104,8 +106,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<RootFactorization> make_mumps_factorization() {
-  return std::make_unique<MumpsFactorization>();
+std::unique_ptr<RootFactorization> make_mumps_factorization(const std::string& factor_directory) {
+  return std::make_unique<MumpsFactorization>(factor_directory);
 }
 
 } // namespace bipot::detail

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bipot::detail {
@@ -29,8 +30,9 @@ public:
   virtual void solve(const double* b, double* x) = 0;
 };
 
-/// MUMPS multifrontal LU with the ordering MUMPS chooses (mumps_factorization.cpp).
-std::unique_ptr<RootFactorization> make_mumps_factorization();
+/// MUMPS multifrontal LU with the ordering MUMPS chooses (mumps_factorization.cpp); its
+/// factors in files in `factor_directory` if not empty (out of core).
+std::unique_ptr<RootFactorization> make_mumps_factorization(const std::string& factor_directory);
 /// Amesos2 KLU2: left-looking LU with AMD ordering (klu2_factorization.cpp).
 std::unique_ptr<RootFactorization> make_klu2_factorization();
 

@@ -55,6 +55,7 @@ void on_root(int rank, const std::string& package, const char* stage, Work&& wor
 
 struct RootedDirectSolver::Impl {
   std::string package;
+  std::string factor_directory;
   int rank = mpi_rank();
   int size = mpi_size();
   Teuchos::RCP<CrsMatrix> source; ///< the distributed matrix whose structure we hold
@@ -86,7 +87,7 @@ void RootedDirectSolver::Impl::gather_structure(const CrsMatrix& A) {
     structure.row_ptr.assign(all_sizes.size() + 1, 0);
     for (std::size_t r = 0; r < all_sizes.size(); ++r)
       structure.row_ptr[r + 1] = structure.row_ptr[r] + static_cast<std::size_t>(all_sizes[r]);
-    lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization();
+    lu = package == "klu2" ? make_klu2_factorization() : make_mumps_factorization(factor_directory);
     lu->analyse(structure);
     // MUMPS copied the indices it needs: the gathered columns (8 bytes per entry) can go.
     // KLU2 keeps reading them at every factorisation.
@@ -100,8 +101,10 @@ std::vector<double> RootedDirectSolver::Impl::gather_values(const CrsMatrix& A) 
   return gather_to_root(values, MPI_DOUBLE, rank, size);
 }
 
-RootedDirectSolver::RootedDirectSolver(std::string package) : impl_(std::make_unique<Impl>()) {
+RootedDirectSolver::RootedDirectSolver(std::string package, std::string factor_directory)
+    : impl_(std::make_unique<Impl>()) {
   impl_->package = std::move(package);
+  impl_->factor_directory = std::move(factor_directory);
 }
 RootedDirectSolver::~RootedDirectSolver() = default;
 

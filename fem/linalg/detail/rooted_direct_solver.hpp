@@ -18,7 +18,8 @@ namespace bipot::detail {
 class RootedDirectSolver {
 public:
   /// `package`: "mumps" or "klu2" (validated by the LinearSolver options).
-  explicit RootedDirectSolver(std::string package);
+  /// `factor_directory`: MUMPS writes its factors there (out of core); empty: in memory.
+  explicit RootedDirectSolver(std::string package, std::string factor_directory = "");
   ~RootedDirectSolver();
 
   /// Factorises A (collective). Called again for the same A after a refill, the structure

@@ -1,12 +1,16 @@
 #include "chain_problem.hpp"
 #include "elasticity_problems.hpp"
 #include "fem/core/error.hpp"
+#include "fem/linalg/communicator.hpp"
 #include "fem/linalg/linear_solver.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace bipot {
@@ -511,12 +515,57 @@ TEST(LinearSolverOptions, InvalidOptionsAreAllReported) {
   }
 }
 
+// `out_of_core`: the rooted MUMPS LU keeps its factors in files in TMPDIR while the solver
+// lives, and solves as the in-memory factors do.
+TEST(LinearSolver, OutOfCoreDirectSolveMatchesInMemoryAndRemovesItsFiles) {
+  namespace fs = std::filesystem;
+  Chain chain;
+  const auto dist = chain.distribution();
+  SparseMatrix A(dist, chain.pattern(dist));
+  chain.assemble(A);
+  DistributedVector b(dist), x_memory(dist), x_disk(dist);
+  chain.assemble_rhs(b);
+  LinearSolver memory(options({"direct", "none"}));
+  memory.setup(A);
+  memory.solve(b, x_memory);
+
+  const char* old = std::getenv("TMPDIR");
+  const std::string saved = old ? old : "";
+  const fs::path dir = fs::temp_directory_path() / ("bipot_ooc_direct_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  setenv("TMPDIR", dir.c_str(), 1);
+  auto files = [&] { return std::distance(fs::directory_iterator(dir), fs::directory_iterator()); };
+  {
+    LinearSolverOptions o = options({"direct", "none"});
+    o.out_of_core = true;
+    EXPECT_EQ(factor_directory(o), dir.string());
+    LinearSolver disk(o);
+    disk.setup(A);
+    // The matrix is gathered and factorised on rank 0.
+    if (mpi_rank() == 0) {
+      EXPECT_GT(files(), 0) << "no factor file in " << dir;
+    }
+    disk.solve(b, x_disk);
+  }
+  if (saved.empty())
+    unsetenv("TMPDIR");
+  else
+    setenv("TMPDIR", saved.c_str(), 1);
+  EXPECT_EQ(files(), 0) << "factor files left in " << dir;
+  fs::remove_all(dir);
+  EXPECT_LT(relative_error(x_disk, [&](Index i) { return chain.exact(i); }), 1e-12);
+  x_disk.axpy(-1.0, x_memory);
+  EXPECT_LE(x_disk.norm2(), 1e-14 * x_memory.norm2());
+}
+
 TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   const auto schema = LinearSolver::schema();
   EXPECT_EQ(schema.name(), "linear_solver");
-  EXPECT_EQ(schema.keys(), (std::vector<std::string>{"method", "preconditioner", "tolerance",
-                                                     "max_iterations", "restart", "amg_coarse_size",
-                                                     "factorization", "lu_refresh", "verbose"}));
+  EXPECT_EQ(schema.keys(),
+            (std::vector<std::string>{"method", "preconditioner", "tolerance", "max_iterations",
+                                      "restart", "amg_coarse_size", "factorization", "lu_refresh",
+                                      "verbose", "out_of_core"}));
   ParameterSet given;
   given.set("method", std::string("gmres"));
   given.set("max_iterations", 7L);
@@ -529,7 +578,8 @@ TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
   EXPECT_EQ(o.tolerance, d.tolerance);
   EXPECT_EQ(o.restart, d.restart);
   EXPECT_EQ(o.amg_coarse_size, d.amg_coarse_size);
-  EXPECT_EQ(o.lu_refresh, d.lu_refresh);
+  EXPECT_EQ(o.verbose, d.verbose);
+  EXPECT_EQ(o.out_of_core, d.out_of_core);
   EXPECT_EQ(o.verbose, d.verbose);
 }
 
