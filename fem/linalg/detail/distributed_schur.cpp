@@ -31,9 +31,13 @@ struct DistributedSchur::Impl {
   int rank = mpi_rank(), size = mpi_size();
   Teuchos::RCP<CrsMatrix> source; ///< the matrix whose structure was analysed
   std::vector<long long> schur_dofs;
-  std::vector<MUMPS_INT> irn, jcn, listvar; ///< 1-based, as MUMPS counts
-  std::vector<std::size_t> kept; ///< symmetric: positions of the lower triangle's entries
-  std::vector<double> values, schur, rhs, redrhs;
+  /// The entries MUMPS reads (1-based, as it counts), collected for the analysis and each
+  /// factorisation and freed after it: the solves need only the factors, and at 1M DOFs these
+  /// copies of K are 100s of MB.
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> values;
+  std::vector<MUMPS_INT> listvar;
+  std::vector<double> schur, rhs, redrhs;
   std::vector<int> owned_counts, owned_offsets; ///< rows per rank, for b and x
   bool initialised = false;
   bool symmetric = false;       ///< the instance factorises LDLᵀ (SYM = 2)
@@ -83,40 +87,63 @@ struct DistributedSchur::Impl {
                       " failed: " + why);
   }
 
-  void analyse(const CrsMatrix& A) {
+  // This rank's entries of A in the same order every time (A's structure is fixed): a
+  // symmetric matrix by its lower triangle, as MUMPS sums (i, j) and (j, i).
+  void collect(const CrsMatrix& A) {
     const auto local = A.getLocalMatrixHost();
     const auto row_map = A.getRowMap();
     const auto col_map = A.getColMap();
     const std::size_t n_rows = A.getNodeNumRows();
-    // A symmetric matrix is given by its lower triangle: MUMPS sums (i, j) and (j, i).
-    irn.clear();
-    jcn.clear();
-    kept.clear();
+    const std::size_t count =
+        symmetric ? lower_count(A) : static_cast<std::size_t>(local.values.extent(0));
+    irn.resize(count);
+    jcn.resize(count);
+    values.resize(count);
+    std::size_t t = 0;
     for (std::size_t r = 0; r < n_rows; ++r) {
       const auto row = row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r));
       for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
         const auto col = col_map->getGlobalElement(local.graph.entries(k));
         if (symmetric && col > row) continue;
-        if (symmetric) kept.push_back(static_cast<std::size_t>(k));
-        irn.push_back(static_cast<MUMPS_INT>(row + 1));
-        jcn.push_back(static_cast<MUMPS_INT>(col + 1));
+        irn[t] = static_cast<MUMPS_INT>(row + 1);
+        jcn[t] = static_cast<MUMPS_INT>(col + 1);
+        values[t++] = local.values(k);
       }
     }
-    irn.shrink_to_fit();
-    jcn.shrink_to_fit();
-    kept.shrink_to_fit();
-    values.assign(irn.size(), 0.0);
-    const int n_owned = static_cast<int>(n_rows);
+    id.nnz_loc = static_cast<MUMPS_INT8>(count);
+    id.irn_loc = irn.data();
+    id.jcn_loc = jcn.data();
+    id.a_loc = values.data();
+  }
+  std::size_t lower_count(const CrsMatrix& A) const {
+    const auto local = A.getLocalMatrixHost();
+    const auto row_map = A.getRowMap();
+    const auto col_map = A.getColMap();
+    std::size_t count = 0;
+    for (std::size_t r = 0; r < A.getNodeNumRows(); ++r) {
+      const auto row = row_map->getGlobalElement(static_cast<Map::local_ordinal_type>(r));
+      for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
+        count += col_map->getGlobalElement(local.graph.entries(k)) <= row;
+    }
+    return count;
+  }
+  void release_entries() {
+    std::vector<MUMPS_INT>().swap(irn);
+    std::vector<MUMPS_INT>().swap(jcn);
+    std::vector<double>().swap(values);
+    id.irn_loc = id.jcn_loc = nullptr;
+    id.a_loc = nullptr;
+  }
+
+  void analyse(const CrsMatrix& A) {
+    collect(A);
+    const int n_owned = static_cast<int>(A.getNodeNumRows());
     owned_counts.assign(size, 0);
     MPI_Allgather(&n_owned, 1, MPI_INT, owned_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
     owned_offsets = offsets(owned_counts);
     const std::size_t n = A.getGlobalNumRows();
     id.n = static_cast<MUMPS_INT>(n);
     id.icntl[17] = 3; // ICNTL(18) = 3: distributed assembled matrix, entries given by each rank
-    id.nnz_loc = static_cast<MUMPS_INT8>(irn.size());
-    id.irn_loc = irn.data();
-    id.jcn_loc = jcn.data();
-    id.a_loc = values.data();
     const std::size_t m = schur_dofs.size();
     listvar.resize(m);
     for (std::size_t i = 0; i < m; ++i)
@@ -153,13 +180,9 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
     im.schur_dofs = schur_dofs;
     im.analyse(*A);
     im.source = A;
+  } else {
+    im.collect(*A);
   }
-  const auto local = A->getLocalMatrixHost();
-  if (im.symmetric)
-    for (std::size_t t = 0; t < im.kept.size(); ++t)
-      im.values[t] = local.values(im.kept[t]);
-  else
-    std::copy(local.values.data(), local.values.data() + local.values.extent(0), im.values.begin());
   // S is written by the host during the factorisation and handed over by take_schur(); the
   // solves after it do not read it.
   const std::size_t m = schur_dofs.size();
@@ -181,6 +204,7 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
     break;
   }
   im.id.schur = nullptr;
+  im.release_entries();
   if (!schur_dofs.empty() && im.id.infog[27] > 0)
     throw SolverError("direct solver (mumps, distributed) factorisation failed: numerically "
                       "singular matrix outside the Schur variables (" +
