@@ -14,6 +14,103 @@ namespace bipot {
 
 using namespace analysis_detail;
 
+bool AugmentedLagrangianIncrement::assemble(const Constraints& constraints, double dtau,
+                                            bool first_pass) {
+  const auto t0 = std::chrono::steady_clock::now();
+  bool tangent_changed = false;
+  for (const auto& ia : ctx_.interfaces) {
+    ia->evaluate(ctx_.u, dtau);
+    tangent_changed = tangent_changed || ia->tangent_changed();
+  }
+  // Prescribed increments are eliminated with the matrix's own diagonal: rebuild then.
+  const bool rebuild = !ctx_.matrix_ready || !ctx_.linear || tangent_changed ||
+                       (ctx_.has_contact && first_pass && !ctx_.target.empty());
+  SparseMatrix* K = rebuild ? &ctx_.K : nullptr;
+  ctx_.R.set_zero();
+  if (K) K->set_zero();
+  ctx_.solid.assemble(ctx_.u, constraints, K, ctx_.R);
+  for (const auto& ia : ctx_.interfaces)
+    ia->add_to_system(constraints, K, ctx_.R);
+  ctx_.R.finish_assembly();
+  if (K) K->finish_assembly();
+  ctx_.add_step_loads(constraints);
+  ctx_.summary.assembly_seconds += seconds_since(t0);
+  return rebuild;
+}
+
+bool AugmentedLagrangianIncrement::update_multipliers(IncrementLog& log, bool matrix_rebuilt) {
+  if (log.uzawa_updates >= ctx_.contact_solver.max_outer_iterations) {
+    log.failure =
+        "the Uzawa multipliers did not settle in " + std::to_string(log.uzawa_updates) + " updates";
+    return false;
+  }
+  for (const auto& ia : ctx_.interfaces)
+    ia->update_multipliers();
+  ++log.uzawa_updates;
+  // K was rebuilt but not factorised: the solver still holds the previous matrix, so it must
+  // be set up again even if the next tangent equals the one last factorised.
+  if (matrix_rebuilt) ctx_.matrix_ready = false;
+  return true;
+}
+
+bool AugmentedLagrangianIncrement::newton_step(IncrementLog& log, bool matrix_rebuilt) {
+  RunSummary& summary = ctx_.summary;
+  if (matrix_rebuilt) {
+    const auto t0 = std::chrono::steady_clock::now();
+    // A failed factorisation (the direct solvers broadcast it: every rank throws) is a
+    // failed increment, cut back like the others: a plastic tangent can be singular where
+    // points sit at a yield surface's apex, which a smaller step may avoid.
+    try {
+      ctx_.solver.setup(ctx_.K);
+    } catch (const SolverError& e) {
+      log.failure = e.what();
+      return false;
+    }
+    summary.setup_seconds += seconds_since(t0);
+    ctx_.matrix_ready = true;
+    for (const auto& ia : ctx_.interfaces)
+      ia->mark_tangent_assembled();
+    ++summary.matrix_setups;
+  }
+  ctx_.du.set_zero();
+  const auto t0 = std::chrono::steady_clock::now();
+  LinearSolveStats stats;
+  try {
+    stats = ctx_.solver.solve(ctx_.R, ctx_.du);
+  } catch (const SolverError& e) {
+    log.failure = e.what();
+    return false;
+  }
+  summary.solve_seconds += seconds_since(t0);
+  log.linear_iterations += stats.iterations;
+  summary.linear_iterations += stats.iterations;
+  ++summary.linear_solves;
+  return true;
+}
+
+void AugmentedLagrangianIncrement::move(const std::vector<bool>& prescribed, double norm,
+                                        double dtau, bool damp) {
+  std::vector<double>& u = ctx_.u;
+  std::vector<double> du_all = ctx_.du.gather_all();
+  ctx_.rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
+  double step = 1.0;
+  if (damp) {
+    const auto t0 = std::chrono::steady_clock::now();
+    // The merit is the free-DOF residual: constrained DOFs take their whole (prescribed)
+    // step, so their rows are eliminated as in the iteration itself.
+    const Constraints fixed = ctx_.held();
+    std::vector<double> trial(u.size());
+    step = backtracking_step(norm, [&](double s) {
+      for (std::size_t i = 0; i < u.size(); ++i)
+        trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
+      return ctx_.residual_norm(trial, dtau, fixed);
+    });
+    ctx_.summary.assembly_seconds += seconds_since(t0);
+  }
+  for (std::size_t i = 0; i < u.size(); ++i)
+    u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
+}
+
 // Newton (and, for bipotential_uzawa, Uzawa) iterations of one increment ending at stage
 // load factor `lambda`. Leaves `u` at the last iterate; the caller restores it on failure.
 bool AugmentedLagrangianIncrement::solve(const IncrementRequest& request, IncrementLog& log) {
@@ -23,55 +120,29 @@ bool AugmentedLagrangianIncrement::solve(const IncrementRequest& request, Increm
   }
   const double lambda = request.lambda, dtau = request.dtau;
   const NonlinearSolverOptions& copt = ctx_.contact_solver;
-  const AnalysisOptions& options = ctx_.options;
-  const bool has_contact = ctx_.has_contact, linear = ctx_.linear;
-  const auto& interfaces = ctx_.interfaces;
-  const auto& target = ctx_.target;
-  const auto& start = ctx_.start;
-  std::vector<double>& u = ctx_.u;
-  SparseMatrix& K = ctx_.K;
-  DistributedVector &R = ctx_.R, &du = ctx_.du, &F_step = ctx_.F_step;
-  bool& matrix_ready = ctx_.matrix_ready;
-  RunSummary& summary = ctx_.summary;
-  const int max_iterations = has_contact ? copt.max_iterations : options.max_iterations;
-  const double tolerance = has_contact ? copt.tolerance : options.residual_tolerance;
+  const bool has_contact = ctx_.has_contact;
+  const int max_iterations = has_contact ? copt.max_iterations : ctx_.options.max_iterations;
   ctx_.begin_increment(lambda);
 
   const std::vector<bool> prescribed = ctx_.prescribed();
   Constraints constraints;
-  ConvergenceTest test(tolerance);
+  ConvergenceTest test(has_contact ? copt.tolerance : ctx_.options.residual_tolerance);
   double baseline = -1.0;
   bool first_pass = true;
-  int inner = 0;
-  for (;; ++log.iterations, ++inner) {
+  for (int inner = 0;; ++log.iterations, ++inner) {
     constraints.clear();
-    for (const auto& [d, v] : target)
-      constraints.set(d, first_pass ? start.at(d) + lambda * (v - start.at(d)) - u[d] : 0.0);
-    auto t0 = std::chrono::steady_clock::now();
-    bool tangent_changed = false;
-    for (const auto& ia : interfaces) {
-      ia->evaluate(u, dtau);
-      tangent_changed = tangent_changed || ia->tangent_changed();
+    for (const auto& [d, v] : ctx_.target) {
+      const double s = ctx_.start.at(d);
+      constraints.set(d, first_pass ? s + lambda * (v - s) - ctx_.u[d] : 0.0);
     }
-    // Prescribed increments are eliminated with the matrix's own diagonal: rebuild then.
-    const bool need_matrix = !matrix_ready || !linear || tangent_changed ||
-                             (has_contact && first_pass && !target.empty());
-    R.set_zero();
-    if (need_matrix) K.set_zero();
-    ctx_.solid.assemble(u, constraints, need_matrix ? &K : nullptr, R);
-    for (const auto& ia : interfaces)
-      ia->add_to_system(constraints, need_matrix ? &K : nullptr, R);
-    R.finish_assembly();
-    if (need_matrix) K.finish_assembly();
-    ctx_.add_step_loads(constraints);
-    const double norm = ctx_.free_norm(R, constraints);
+    const bool rebuilt = assemble(constraints, dtau, first_pass);
+    const double norm = ctx_.free_norm(ctx_.R, constraints);
     double change = 0;
-    for (const auto& ia : interfaces)
+    for (const auto& ia : ctx_.interfaces)
       change = std::max(change, ia->multiplier_change());
     const double force_scale = ctx_.interface_force_scale();
-    summary.assembly_seconds += seconds_since(t0);
     if (!test.has_reference()) {
-      test.set_reference(norm, F_step.norm2(), force_scale, ctx_.reaction_scale);
+      test.set_reference(norm, ctx_.F_step.norm2(), force_scale, ctx_.reaction_scale);
       if (test.reference() == 0.0 && change == 0.0) return true; // nothing acts on the body
     }
     test.raise_reference(force_scale);
@@ -89,17 +160,7 @@ bool AugmentedLagrangianIncrement::solve(const IncrementRequest& request, Increm
     // equilibrium and the contact law converge together.
     const bool inner_done = force_ok || (!copt.uzawa() && !first_pass && norm <= 0.1 * baseline);
     if (has_contact && inner_done && !contact_ok) {
-      if (log.uzawa_updates >= copt.max_outer_iterations) {
-        log.failure = "the Uzawa multipliers did not settle in " +
-                      std::to_string(log.uzawa_updates) + " updates";
-        return false;
-      }
-      for (const auto& ia : interfaces)
-        ia->update_multipliers();
-      ++log.uzawa_updates;
-      // K was rebuilt but not factorised: the solver still holds the previous matrix, so
-      // it must be set up again even if the next tangent equals the one last factorised.
-      if (need_matrix) matrix_ready = false;
+      if (!update_multipliers(log, rebuilt)) return false;
       inner = -1;
       baseline = -1; // the next residual, for the new multipliers, is the new baseline
       continue;
@@ -112,60 +173,13 @@ bool AugmentedLagrangianIncrement::solve(const IncrementRequest& request, Increm
       log.failure = "the residual is not finite";
       return false;
     }
-    if (need_matrix) {
-      t0 = std::chrono::steady_clock::now();
-      // A failed factorisation (the direct solvers broadcast it: every rank throws) is a
-      // failed increment, cut back like the others: a plastic tangent can be singular where
-      // points sit at a yield surface's apex, which a smaller step may avoid.
-      try {
-        ctx_.solver.setup(K);
-      } catch (const SolverError& e) {
-        log.failure = e.what();
-        return false;
-      }
-      summary.setup_seconds += seconds_since(t0);
-      matrix_ready = true;
-      for (const auto& ia : interfaces)
-        ia->mark_tangent_assembled();
-      ++summary.matrix_setups;
-    }
-    du.set_zero();
-    t0 = std::chrono::steady_clock::now();
-    LinearSolveStats stats;
-    try {
-      stats = ctx_.solver.solve(R, du);
-    } catch (const SolverError& e) {
-      log.failure = e.what();
-      return false;
-    }
-    summary.solve_seconds += seconds_since(t0);
-    log.linear_iterations += stats.iterations;
-    summary.linear_iterations += stats.iterations;
-    ++summary.linear_solves;
-    std::vector<double> du_all = du.gather_all();
-    ctx_.rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
-    double step = 1.0;
+    if (!newton_step(log, rebuilt)) return false;
     // Backtracking on ‖R‖ at fixed multipliers: semi-smooth Newton steps can flip pairs
     // between stick and slip (or open and closed) back and forth; damping breaks the cycle.
     // Without contact, a plastic bulk: from the first step on, which carries the prescribed
     // increments and is the one that most often overshoots (points switching return branch);
     // on the 100k-DOF strip footing it removed all 4 cut-backs and 11 % of the iterations.
-    const bool damp = copt.line_search && (has_contact ? !first_pass : !linear);
-    if (damp) {
-      t0 = std::chrono::steady_clock::now();
-      // The merit is the free-DOF residual: constrained DOFs take their whole (prescribed)
-      // step, so their rows are eliminated as in the iteration itself.
-      const Constraints fixed = ctx_.held();
-      std::vector<double> trial(u.size());
-      step = backtracking_step(norm, [&](double s) {
-        for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
-        return ctx_.residual_norm(trial, dtau, fixed);
-      });
-      summary.assembly_seconds += seconds_since(t0);
-    }
-    for (std::size_t i = 0; i < u.size(); ++i)
-      u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
+    move(prescribed, norm, dtau, copt.line_search && (has_contact ? !first_pass : !ctx_.linear));
     first_pass = false;
   }
 }

@@ -7,6 +7,8 @@
 #include "fem/analysis/detail/increment_context.hpp"
 #include "fem/analysis/detail/increment_solver.hpp"
 
+#include <vector>
+
 namespace bipot {
 
 /// Newton on u with the interface multipliers r̂ held, the interfaces' corrector r̂ ← Proj(τ)
@@ -19,6 +21,19 @@ public:
   bool solve(const IncrementRequest& request, IncrementLog& log) override;
 
 private:
+  /// R (and K, when the tangent changed or the first pass eliminates the prescribed
+  /// increments) at u for `constraints`; returns whether K was rebuilt.
+  bool assemble(const Constraints& constraints, double dtau, bool first_pass);
+  /// The interfaces' corrector r̂ ← Proj(τ); false (and log.failure) once the contact
+  /// solver's limit on updates is reached.
+  bool update_multipliers(IncrementLog& log, bool matrix_rebuilt);
+  /// du = K⁻¹ R, setting the solver up first if K was rebuilt; false (and log.failure) if the
+  /// factorisation or the solve fails.
+  bool newton_step(IncrementLog& log, bool matrix_rebuilt);
+  /// u += s du on the free DOFs (the prescribed ones take the whole step), s from the
+  /// backtracking line search on ‖R‖ when `damp`, else 1.
+  void move(const std::vector<bool>& prescribed, double norm, double dtau, bool damp);
+
   IncrementContext& ctx_;
 };
 
