@@ -11,6 +11,7 @@
 #include "fem/core/error.hpp"
 #include "fem/core/nearest_name.hpp"
 #include "fem/input/problem_reader.hpp"
+#include "fem/input/stage_schema.hpp"
 #include "fem/linalg/communicator.hpp"
 #include "fem/linalg/linear_solver.hpp"
 
@@ -206,7 +207,7 @@ int describe_command(const std::vector<std::string>& args, const Catalogue& cata
               << "interface laws: " << join_names(laws.names()) << "\n"
               << "contact solvers: " << join_names(solvers.names()) << "\n"
               << "linear solver: linear_solver\n"
-              << "input file: input\n"
+              << "input file: input, stage, control\n"
               << "Use: bipot describe NAME [--markdown]\n";
     return 0;
   }
@@ -224,6 +225,10 @@ int describe_command(const std::vector<std::string>& args, const Catalogue& cata
     print(LinearSolver::schema());
   else if (name == "input")
     std::cout << describe_input_format();
+  else if (name == "stage")
+    print(stage_schema());
+  else if (name == "control")
+    print(control_schema());
   else {
     std::vector<std::string> all = mats.names();
     for (const auto& n : laws.names())
@@ -231,7 +236,8 @@ int describe_command(const std::vector<std::string>& args, const Catalogue& cata
     for (const auto& n : solvers.names())
       all.push_back(n);
     all.push_back("linear_solver");
-    all.push_back("input");
+    for (const char* n : {"input", "stage", "control"})
+      all.push_back(n);
     std::string msg = "bipot describe: nothing is called '" + name + "'";
     const auto near = nearest_name(name, all);
     if (!near.empty()) msg += " (did you mean '" + near + "'?)";

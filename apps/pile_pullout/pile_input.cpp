@@ -3,6 +3,7 @@
 #include "fem/core/error.hpp"
 #include "fem/input/detail/sections.hpp"
 #include "fem/input/detail/yaml_map.hpp"
+#include "fem/input/stage_schema.hpp"
 #include "fem/linalg/linear_solver.hpp"
 
 #include <algorithm>
@@ -107,26 +108,12 @@ ParamSchemaOf<PulloutStage> pullout_schema() {
   s.real("head_displacement", &P::head_displacement, "m", "head displacement reached at the end")
       .positive();
   s.integer("increments", &P::increments, "load increments of the stage").at_least(1);
-  s.real("duration", &P::duration, "s",
-         "pseudo-time of the stage (matters for a viscous RCCM interface only)")
-      .positive()
-      .defaulted();
-  s.string("control", &P::control,
-           "how the head displacement advances: ramp (equal increments), "
-           "dissipation (ramp, then steps of equal energy released by adhesion loss "
-           "through the debonding snap-back) or arc_length (steps of equal interface "
-           "displacement); docs/theory.md")
-      .one_of({"ramp", "dissipation", "arc_length"})
-      .defaulted();
-  // Optional without a default value: the analysis derives them (PathControl).
-  s.real("dissipation_step", &P::dissipation_step, "kJ",
-         "energy released by adhesion loss per traced step (control: dissipation); default: "
-         "the interfaces' adhesion energy / increments")
-      .positive();
-  s.integer("max_increments", &P::max_increments, "traced steps allowed (default 20 x increments)")
-      .at_least(1);
-  // The general input's stage key, with its range and doc (problem_spec.hpp).
-  s.real("energy_tolerance", &P::energy_tolerance, "", "") = energy_tolerance_spec();
+  // The keys the general input's stages have too, with their texts (fem/input/stage_schema.hpp).
+  add_duration_key(s, &P::duration);
+  add_control_type_key(s, "control", &P::control);
+  add_dissipation_step_key(s, &P::dissipation_step); // empty: derived by the analysis
+  add_max_increments_key(s, &P::max_increments);
+  add_energy_tolerance_key(s, &P::energy_tolerance);
   return s;
 }
 

@@ -136,8 +136,8 @@ ProblemSpec make_problem(const PileSpec& pile) {
   pull.duration = pile.pullout.duration;
   pull.control.type = pile.pullout.control;
   pull.control.where = pile.pullout_where;
-  if (pile.pullout.dissipation_step) pull.control.dissipation_step = *pile.pullout.dissipation_step;
-  if (pile.pullout.max_increments) pull.control.max_increments = *pile.pullout.max_increments;
+  pull.control.dissipation_step = pile.pullout.dissipation_step;
+  pull.control.max_increments = pile.pullout.max_increments;
   pull.energy_tolerance = pile.pullout.energy_tolerance;
   supports(pull);
   pull.boundary_conditions.push_back(

@@ -11,8 +11,7 @@ namespace bipot {
 PathControl::PathControl(const StageSpec& stage, const CondensedInterfaceSystem* sys,
                          const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces)
     : stage_(stage), sys_(sys), interfaces_(interfaces),
-      max_increments_(stage.control.max_increments > 0 ? stage.control.max_increments
-                                                       : 20 * stage.increments),
+      max_increments_(stage.control.max_increments.value_or(20 * stage.increments)),
       planned_(1.0 / stage.increments), step_(std::make_unique<PathStep>()) {
   if (!stage.control.path_following()) return;
   if (!sys_)
@@ -25,8 +24,7 @@ PathControl::PathControl(const StageSpec& stage, const CondensedInterfaceSystem*
                         "': control dissipation follows the energy adhesion loss releases, and "
                         "no interface has adhesion left to lose (no rccm interface with beta > "
                         "0); use control: arc_length");
-    dissipation_step_ = stage.control.dissipation_step > 0 ? stage.control.dissipation_step
-                                                           : capacity_ / stage.increments;
+    dissipation_step_ = stage.control.dissipation_step.value_or(capacity_ / stage.increments);
     dissipation_ = dissipation_step_;
   }
 }
@@ -118,7 +116,7 @@ void PathControl::end_increment(const std::vector<double>& u, const std::vector<
     if (dlambda >= planned_ || adhesion_capacity() < dissipation_step_) mode_ = Mode::Ramp;
   } else if (!finished_) {
     if (stage_.control.type == "arc_length" && x.size() > 0) {
-      length0_ = stage_.control.arc_length > 0 ? stage_.control.arc_length : x.norm();
+      length0_ = stage_.control.arc_length.value_or(x.norm());
       length_ = length0_;
       mode_ = Mode::ArcLength;
     } else if (stage_.control.type == "dissipation" && dissipation_last_ > dissipation_step_) {

@@ -89,16 +89,23 @@ ParamSpec& ParamSpec::one_of(std::vector<std::string> allowed) {
 std::string ParamSpec::range_text() const {
   if (std::isinf(lower) && std::isinf(upper)) return "";
   std::ostringstream os;
+  // An integer key's bounds in full: [1, 1000000], not [1, 1e+06].
+  const auto bound = [&](double b) {
+    if (type == ParamType::Integer)
+      os << static_cast<long long>(b);
+    else
+      os << b;
+  };
   os << (lower_open ? '(' : '[');
   if (std::isinf(lower))
     os << "-inf";
   else
-    os << lower;
+    bound(lower);
   os << ", ";
   if (std::isinf(upper))
     os << "inf";
   else
-    os << upper;
+    bound(upper);
   os << (upper_open ? ')' : ']');
   return os.str();
 }

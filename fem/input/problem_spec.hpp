@@ -105,9 +105,9 @@ struct RigidBodyConditionSpec {
 /// both trace snap-backs that a ramp jumps over.
 struct ControlSpec {
   std::string type = "ramp";
-  double arc_length = 0;       ///< first arc length (m); 0: that of the first increment
-  double dissipation_step = 0; ///< kJ per step; 0: remaining adhesion energy / increments
-  int max_increments = 0;      ///< path-following steps allowed; 0: 20 × increments
+  std::optional<double> arc_length;       ///< first arc length (m); empty: the first increment's
+  std::optional<double> dissipation_step; ///< kJ per step; empty: adhesion energy / increments
+  std::optional<int> max_increments;      ///< path-following steps allowed; empty: 20 × increments
   std::string where;
   bool path_following() const { return type != "ramp"; }
 };
@@ -140,14 +140,10 @@ struct StageSpec {
   /// results (VTK included) are written, besides the planned levels k/increments.
   std::vector<double> output_at;
   /// The run's |energy balance error| allowed after every increment, relative to the work
-  /// put in (0: no control; energy_tolerance_spec()).
+  /// put in (0: no control; add_energy_tolerance_key()).
   double energy_tolerance = 0;
   std::string where;
 };
-
-/// The stage key `energy_tolerance`: name, range and doc, read by the stage reader and by the
-/// pile app's `pullout` stage, and shown in the docs from the same entry.
-ParamSpec energy_tolerance_spec();
 
 /// An interface between two bodies: `between: [a, b]` regions (a = body 1) of a conforming
 /// mesh, or `facet_sets: [a, b]` with coincident nodes or nodes facing each other.

@@ -190,11 +190,17 @@ void expect_input_error(const std::string& text, const std::string& fragment) {
 }
 
 TEST(PathFollowingInput, BadControlsAreLocated) {
-  expect_input_error(input("arc_lenght"), "unknown control type 'arc_lenght' (did you mean "
-                                          "'arc_length'?)");
-  expect_input_error(input("{type: arc_length, arc_length: -0.1}"), "value must be > 0");
-  expect_input_error(input("{type: dissipation, dissipation_step: 0}"), "value must be > 0 kJ");
-  expect_input_error(input("{type: ramp, arc_length: 1}"), "only for type: arc_length");
+  // The messages of the stage's control schema (control_schema()).
+  expect_input_error(input("arc_lenght"), "stages[0].control: value \"arc_lenght\" is not one "
+                                          "of: ramp, arc_length, dissipation (did you mean "
+                                          "\"arc_length\"?)");
+  expect_input_error(input("{type: arc_length, arc_length: -0.1}"),
+                     "stages[0].control.arc_length: value -0.1 is out of range (0, inf) m");
+  expect_input_error(input("{type: dissipation, dissipation_step: 0}"),
+                     "stages[0].control.dissipation_step: value 0 is out of range (0, inf) kJ");
+  expect_input_error(input("{type: ramp, arc_length: 1}"),
+                     "stages[0].control.arc_length: only for type: arc_length (this control is "
+                     "ramp)");
   expect_input_error(input("dissipation", "semismooth_newton"),
                      "needs contact_solver.type: generalized_newton");
   std::string still = input("arc_length");
@@ -202,14 +208,14 @@ TEST(PathFollowingInput, BadControlsAreLocated) {
   expect_input_error(still, "nothing to scale");
 }
 
-// `energy_tolerance` out of [0, 1): at its line, with the range (energy_tolerance_spec()).
+// `energy_tolerance` out of [0, 1): at its key, with the range (describe_energy_tolerance()).
 TEST(PathFollowingInput, BadEnergyToleranceIsLocated) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"-1.0e-6", "-1e-06"}, {"1.0", "1"}, {"2", "2"}};
   for (const auto& [value, shown] : cases) {
     std::string text = input("dissipation");
     text.replace(text.find("    control:"), 0, "    energy_tolerance: " + value + "\n");
-    expect_input_error(text, "bad.yaml:23:23: stages[0].energy_tolerance: value " + shown +
+    expect_input_error(text, "bad.yaml:23:5: stages[0].energy_tolerance: value " + shown +
                                  " is out of range [0, 1)");
   }
 }

@@ -227,6 +227,13 @@ ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
   return read_parameters_node(parent.node(key), parent.path(key), parent.diag(), schema, skip);
 }
 
+ParameterSet read_schema_keys(const YamlMap& m, const ParamSchema& schema) {
+  std::vector<std::string> others;
+  for (const auto& kv : m.self())
+    if (!schema.find(kv.first.Scalar())) others.push_back(kv.first.Scalar());
+  return read_parameters_node(m.self(), m.path(), m.diag(), schema, others);
+}
+
 std::vector<MaterialSpec> read_materials(const YamlMap& top, const SchemaIndex& registry) {
   std::vector<MaterialSpec> out;
   const YAML::Node node = top.node("materials");

@@ -50,6 +50,10 @@ ContactSolverSpec read_contact_solver(const YamlMap& top, const SchemaIndex& sol
 ParameterSet read_parameters(const YamlMap& parent, const std::string& key,
                              const ParamSchema& schema, const std::vector<std::string>& skip);
 
+/// The keys of `schema` in the map `m`, which holds other keys too (read by their own readers,
+/// and checked against the map's allowed keys by YamlMap): read as read_parameters() does.
+ParameterSet read_schema_keys(const YamlMap& m, const ParamSchema& schema);
+
 /// Same for a map node already in hand; the keys it gives are set over `base` if not null.
 ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
                                   Diagnostics& diag, const ParamSchema& schema,

@@ -1,8 +1,9 @@
-// The `stages` section: per stage, its boundary conditions, loads and interface gaps.
+// The `stages` section: per stage, its own settings (stage_schema()), boundary conditions,
+// loads, interface gaps and control (control_schema()).
 #include "fem/input/detail/sections.hpp"
 
 #include "fem/core/nearest_name.hpp"
-#include "fem/input/problem_reader.hpp"
+#include "fem/input/stage_schema.hpp"
 
 #include <algorithm>
 
@@ -105,43 +106,19 @@ void read_interface_gaps(const YamlMap& m, StageSpec& st) {
   }
 }
 
-// `control: dissipation` or `control: {type: dissipation, dissipation_step: 0.01}`.
-void read_control(const YamlMap& m, StageSpec& st) {
-  static const std::vector<std::string> types = {"ramp", "arc_length", "dissipation"};
-  ControlSpec& c = st.control;
-  c.where = m.where("control");
+// `control: dissipation` (the type alone) or `control: {type: dissipation, dissipation_step:
+// 0.01}`: the type alone is checked against the same schema, and reported at `control`.
+void read_control(const YamlMap& m, const ParamSchemaOf<ControlSpec>& schema, StageSpec& st) {
+  ParameterSet given;
   if (m.node("control").IsScalar()) {
-    m.string("control", c.type);
+    given.set("type", m.node("control").Scalar());
+    for (const auto& p : validate(schema, given))
+      m.error("control", p.message);
   } else {
-    const YamlMap cm(m.node("control"), m.path("control"), m.diag(),
-                     {"type", "arc_length", "dissipation_step", "max_increments"});
-    if (!cm.valid()) return;
-    cm.string("type", c.type, true);
-    if (cm.real("arc_length", c.arc_length) && cm.has("arc_length") && !(c.arc_length > 0))
-      cm.error("arc_length", "value must be > 0 (the length of a path-following step)");
-    if (cm.real("dissipation_step", c.dissipation_step) && cm.has("dissipation_step") &&
-        !(c.dissipation_step > 0))
-      cm.error("dissipation_step", "value must be > 0 kJ (the energy each step dissipates)");
-    if (cm.integer("max_increments", c.max_increments) && cm.has("max_increments") &&
-        (c.max_increments < 1 || c.max_increments > max_increments_per_stage))
-      cm.error("max_increments", "value " + std::to_string(c.max_increments) +
-                                     " is out of range [1, " +
-                                     std::to_string(max_increments_per_stage) + "]");
-    const bool arc = c.type == "arc_length", dis = c.type == "dissipation";
-    if (cm.has("arc_length") && !arc)
-      cm.error("arc_length", "only for type: arc_length (this control is " + c.type + ")");
-    if (cm.has("dissipation_step") && !dis)
-      cm.error("dissipation_step", "only for type: dissipation (this control is " + c.type + ")");
-    if (cm.has("max_increments") && !arc && !dis)
-      cm.error("max_increments", "only for path-following controls (arc_length, dissipation)");
+    given = read_parameters(m, "control", schema, {});
   }
-  if (std::find(types.begin(), types.end(), c.type) == types.end()) {
-    const std::string near = nearest_name(c.type, types);
-    m.error("control", "unknown control type '" + c.type + "'" +
-                           (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                           "; allowed: " + join_names(types));
-    c.type = "ramp";
-  }
+  st.control = schema.fill(given).value();
+  st.control.where = m.where("control");
 }
 
 } // namespace
@@ -155,28 +132,24 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     top.error("stages", expected);
   UniqueNames names("stage", "each stage needs its own: progress lines and failure reports "
                              "name stages");
-  const auto entries =
-      list_entries(top, "stages",
-                   {"name", "increments", "duration", "reset_displacements", "boundary_conditions",
-                    "loads", "interface_gaps", "interfaces", "obstacle_displacements",
-                    "rigid_bodies", "control", "output_at", "energy_tolerance"},
-                   expected);
+  const auto schema = stage_schema();
+  const auto control = control_schema();
+  std::vector<std::string> keys = {"name"};
+  for (const auto& key : schema.keys())
+    keys.push_back(key);
+  for (const char* key : {"boundary_conditions", "loads", "interface_gaps", "interfaces",
+                          "obstacle_displacements", "rigid_bodies", "control", "output_at"})
+    keys.push_back(key);
+  const auto entries = list_entries(top, "stages", keys, expected);
   std::vector<InterfaceLawChangeSpec> active;
   for (const InterfaceSpec& f : interfaces)
     active.push_back({f.name, f.law, f.parameters, f.where});
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const YamlMap& m = entries[i];
     if (!m.valid()) continue;
-    StageSpec st;
+    StageSpec st = schema.fill(read_schema_keys(m, schema)).value();
     st.where = m.where();
     st.name = names.read(m, i);
-    if (m.integer("increments", st.increments) &&
-        (st.increments < 1 || st.increments > max_increments_per_stage))
-      m.error("increments", "value " + std::to_string(st.increments) + " is out of range [1, " +
-                                std::to_string(max_increments_per_stage) + "]");
-    if (m.real("duration", st.duration) && !(st.duration > 0))
-      m.error("duration", "value must be > 0 s");
-    m.boolean("reset_displacements", st.reset_displacements);
     if (m.has("boundary_conditions")) read_boundary_conditions(m, kinematics, st);
     if (m.has("loads")) read_loads(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interface_gaps")) read_interface_gaps(m, st);
@@ -184,7 +157,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
     if (m.has("obstacle_displacements"))
       read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interfaces")) read_stage_interfaces(m, interfaces, laws, active, st);
-    if (m.has("control")) read_control(m, st);
+    if (m.has("control")) read_control(m, control, st);
     if (m.reals("output_at", st.output_at) && m.has("output_at")) {
       for (std::size_t k = 0; k < st.output_at.size(); ++k) {
         const double f = st.output_at[k];
@@ -195,10 +168,6 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
           m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
                                    std::to_string(st.output_at[k - 1]) + ")");
       }
-    }
-    if (m.real("energy_tolerance", st.energy_tolerance) && m.has("energy_tolerance")) {
-      if (const auto problem = energy_tolerance_spec().check(st.energy_tolerance))
-        m.error("energy_tolerance", *problem);
     }
     out.push_back(std::move(st));
   }
@@ -270,19 +239,3 @@ void check_stage_controls(const ProblemSpec& spec, Diagnostics& diag) {
 }
 
 } // namespace bipot::input
-
-namespace bipot {
-
-ParamSpec energy_tolerance_spec() {
-  ParamSpec s;
-  s.name = "energy_tolerance";
-  s.doc = "the run's energy balance error allowed after every increment, as a fraction of the "
-          "work put in; an increment that breaks it is redone in halves (0: no control; "
-          "docs/theory.md, Energy balance)";
-  s.non_negative().less_than(1.0).with_default(0.0);
-  s.because("a fraction of the work put in: 0 turns the control off, 1 or more would allow any "
-            "balance");
-  return s;
-}
-
-} // namespace bipot

@@ -49,6 +49,7 @@ public:
   YAML::Node node(const std::string& key) const;
   const YAML::Node& self() const { return node_; }
   std::string path(const std::string& key) const { return join_path(path_, key); }
+  const std::string& path() const { return path_; }
   /// "stages[0] (line 12)": how messages name this map when they are about another one.
   std::string path_and_line() const;
   std::string where(const std::string& key) const;

@@ -9,6 +9,7 @@
 #include "contact/laws/rccm.hpp"
 #include "contact/solver/contact_solver_options.hpp"
 #include "fem/core/error.hpp"
+#include "fem/input/stage_schema.hpp"
 #include "fem/linalg/linear_solver.hpp"
 #include "materials/drucker_prager.hpp"
 #include "materials/linear_elastic.hpp"
@@ -203,6 +204,37 @@ TEST(CatalogueBindings, PileSections) {
   check(pile::geostatic_schema());
   check(pile::installation_schema());
   check(pile::pullout_schema());
+}
+
+// The general input's stage keys and its `control` mapping.
+TEST(CatalogueBindings, StageSections) {
+  expect_every_key_bound(stage_schema());
+  expect_struct_defaults_match(stage_schema());
+  expect_every_key_bound(control_schema());
+  expect_struct_defaults_match(control_schema());
+}
+
+// The keys the pile's pullout shares with the general input's stages are declared once: the
+// same type, default, range, units and doc, to the letter.
+TEST(CatalogueBindings, PulloutSharesTheStageKeys) {
+  const auto stage = stage_schema();
+  const auto control = control_schema();
+  const auto pullout = pile::pullout_schema();
+  const std::vector<std::pair<const ParamSchema*, std::string>> shared = {
+      {&stage, "duration"},
+      {&stage, "energy_tolerance"},
+      {&control, "type"},
+      {&control, "dissipation_step"},
+      {&control, "max_increments"}};
+  for (const auto& [schema, key] : shared) {
+    const ParamSpec* general = schema->find(key);
+    const ParamSpec* pile = pullout.find(key == "type" ? "control" : key);
+    ASSERT_NE(general, nullptr) << key;
+    ASSERT_NE(pile, nullptr) << key;
+    EXPECT_EQ(pile->summary(), general->summary()) << key;
+    EXPECT_EQ(pile->range_reason, general->range_reason) << key;
+  }
+  EXPECT_EQ(stage.find("energy_tolerance")->summary().rfind("real, default 0, [0, 1): ", 0), 0u);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The docs' parameter tables are the schemas' own output: they cannot drift from the code.
 #include "contact/solver/contact_solver_options.hpp"
+#include "fem/input/stage_schema.hpp"
 #include "fem/linalg/linear_solver.hpp"
 #include "materials/material_registry.hpp"
 
@@ -33,6 +34,15 @@ TEST(DocsTablesMatchSchemas, InputReference) {
     EXPECT_NE(doc.find(contact::contact_solvers().schema(name).markdown_table()), std::string::npos)
         << "docs/input_reference.md: paste `bipot describe --markdown " << name << "`";
   }
+}
+
+TEST(DocsTablesMatchSchemas, InputStages) {
+  const std::string doc = read(BIPOT_SOURCE_DIR "/docs/input_stages.md");
+  ASSERT_FALSE(doc.empty());
+  EXPECT_NE(doc.find(stage_schema().markdown_table()), std::string::npos)
+      << "docs/input_stages.md: paste `bipot describe --markdown stage`";
+  EXPECT_NE(doc.find(control_schema().markdown_table()), std::string::npos)
+      << "docs/input_stages.md: paste `bipot describe --markdown control`";
 }
 
 } // namespace

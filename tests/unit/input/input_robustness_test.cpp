@@ -85,7 +85,7 @@ TEST(InputRobustness, IntegersDoNotWrap) {
                       "in.yaml:6:33: mesh.blocks.y.cells[0]: value 4294967297 is out of range "
                       "for an integer [-2147483648, 2147483647]"));
   EXPECT_TRUE(reports(plane, "increments: 2", "increments: 4294967297",
-                      "in.yaml:13:17: stages[0].increments: value 4294967297 is out of range "
+                      "in.yaml:13:5: stages[0].increments: value 4294967297 is out of range "
                       "for an integer [-2147483648, 2147483647]"));
   // Beyond a long too, and in a schema's parameters.
   EXPECT_TRUE(has(problems_of(plane + "linear_solver: {max_iterations: 99999999999999999999}\n"),
@@ -100,7 +100,7 @@ TEST(InputRobustness, IntegersDoNotWrap) {
 
 TEST(InputRobustness, AbsurdSizesAreRefused) {
   EXPECT_TRUE(reports(plane, "increments: 2", "increments: 2000000000",
-                      "in.yaml:13:17: stages[0].increments: value 2000000000 is out of range [1, "
+                      "in.yaml:13:5: stages[0].increments: value 2000000000 is out of range [1, "
                       "1000000]"));
   EXPECT_NO_THROW(read_problem_text(replace(plane, "increments: 2", "increments: 1000000"), "a",
                                     bipot::builtin_catalogue()));
