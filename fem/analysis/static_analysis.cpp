@@ -348,10 +348,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.uzawa_updates = log.uzawa_updates;
       rep.residual = log.history.empty() ? 0.0 : log.history.back();
       rep.residual_history = log.history;
-      rep.cutbacks = level;
+      // The level split by what asked for it: convergence failures (the CSV flag `cutbacks`)
+      // and the energy budget, whose halvings counted as cut-backs before.
+      rep.energy_cutbacks = std::min(energy_level, level);
+      rep.cutbacks = level - rep.energy_cutbacks;
       rep.staggered = log.staggered;
       // A traced step on which the load factor falls is on the unstable branch.
-      rep.unstable = level > energy_level || log.staggered > 0 || (rep.traced && lambda < done);
+      rep.unstable = rep.cutbacks > 0 || log.staggered > 0 || (rep.traced && lambda < done);
       // Snap-back: a resultant component lost over 20% of the largest value it has had, and
       // the loss is over 5% of the largest interface force of the model (so that a small
       // interface unloading smoothly, like a pile toe, is not flagged).
