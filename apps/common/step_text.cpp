@@ -39,9 +39,19 @@ std::string energy_summary(const RunSummary& s) {
 
 std::string step_flags(const StepReport& r) {
   std::vector<std::string> parts;
-  // `cutbacks` is the halving level the step was solved at (it grows back one level per
-  // converged step); failures show as time in failed attempts.
-  if (r.cutbacks > 0) parts.push_back("1/" + std::to_string(1L << r.cutbacks) + " step");
+  // The halving level the step was solved at (it grows back one level per converged step),
+  // and how much of it the energy budget asked for: a step shortened for the energy alone
+  // is no convergence trouble. Failures show as time in failed attempts.
+  const int level = r.cutbacks + r.energy_cutbacks;
+  if (level > 0) {
+    std::string step = "1/" + std::to_string(1L << level) + " step";
+    if (r.energy_cutbacks == level)
+      step += " for the energy";
+    else if (r.energy_cutbacks > 0)
+      step += ", " + std::to_string(r.energy_cutbacks) + " of its " + std::to_string(level) +
+              " halvings for the energy";
+    parts.push_back(step);
+  }
   if (r.traced)
     parts.push_back("traced");
   else if (r.requested_output && r.planned_step == 0)

@@ -10,7 +10,9 @@ namespace bipot::app {
 
 /// "" for a planned increment that converged at once; otherwise "  (" + what happened + ")",
 /// e.g. "  (1/4 step, sub-increment, 0.41 s in failed attempts)", "  (jump: staggered)",
-/// "  (unstable)", "  (traced, unstable)" (path-following, load factor falling).
+/// "  (unstable)", "  (traced, unstable)" (path-following, load factor falling), "  (1/4 step
+/// for the energy, sub-increment, energy: 2 halvings)" (shortened by energy_tolerance alone),
+/// "  (1/8 step, 1 of its 3 halvings for the energy)".
 std::string step_flags(const StepReport& r);
 
 /// "<program>: stepping: 83 increments (70 planned, 3 sub-increments, 10 traced), 2 cut-backs,

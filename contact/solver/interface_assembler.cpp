@@ -244,6 +244,7 @@ void InterfaceAssembler::set_law(const InterfaceLaw& law) {
     beta = law.is_tied() ? 1.0 : std::min(beta, law.initial_adhesion());
     results_[i].beta = beta;
   }
+  rebase_energy_account();
   tangent_changed_ = true;
 }
 

@@ -64,7 +64,8 @@ public:
   /// Puts `law` (not owned) in force from the next increment on (a stage's law change). The
   /// committed state carries over (docs/theory.md): jumps, slips and multipliers r̂ (a
   /// predictor for the new law) as they are; β becomes min(β, the new law's β0), and 1 under
-  /// a tied law, which holds each pair's jump where it is.
+  /// a tied law, which holds each pair's jump where it is. The energy account books the
+  /// springs' change and starts the next step from the new law's (rebase_energy_account()).
   void set_law(const InterfaceLaw& law);
   /// set_law() with the law of stage `stage` among the stage laws, if it names one.
   bool enter_stage(std::size_t stage) override;
@@ -168,6 +169,9 @@ private:
     LocalVector jump, traction, r;
     double beta = 0;
   };
+  /// After set_law(): the energy account's start of the next step under the new law
+  /// (interface_energy.cpp).
+  void rebase_energy_account();
 
   const Interface& iface_;
   const InterfaceLaw* law_;
@@ -195,6 +199,10 @@ private:
   std::vector<double> frozen_beta_;
   bool tangent_changed_ = true;
   std::vector<AccountedPair> accounted_;
+  bool account_recorded_ = false; ///< a step was recorded (or an account loaded)
+  /// Change of the springs' energy by a law change, booked with the next step's interference
+  /// work.
+  double law_change_work_ = 0;
   double accounted_shift_ = 0;
   std::array<double, 3> accounted_obstacle_{0, 0, 0};
 };

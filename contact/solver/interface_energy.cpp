@@ -22,10 +22,36 @@ void InterfaceAssembler::start_energy_account() {
   }
   accounted_shift_ = gap_shift_;
   accounted_obstacle_ = obstacle_u_;
+  account_recorded_ = false;
+  law_change_work_ = 0;
+}
+
+void InterfaceAssembler::rebase_energy_account() {
+  // A stage that puts another law in force changes the springs where the interface is: at
+  // the recorded jumps, with β as set_law() left it. What that does to their energy is put in
+  // by the change, not by a force: it is booked as interference work. The next step's
+  // trapezoids then start from the new law's springs, so that the driving force the viscous
+  // term integrates is the law's own at both ends, not the old law's at the start. Before
+  // the first recorded step there is nothing to rebase (the account starts unloaded).
+  if (!account_recorded_) return;
+  for (std::size_t i = 0; i < accounted_.size(); ++i) {
+    AccountedPair& p = accounted_[i];
+    const double beta = committed_[i].beta;
+    // A tied law's whole traction is its multiplier: no springs.
+    const LocalVector a_new =
+        law_->is_tied() ? LocalVector::Zero(dim_) : law_->adhesive_traction(beta, p.jump);
+    const LocalVector a_old = p.traction - p.r;
+    law_change_work_ -= 0.5 * iface_.pairs[i].weight * (a_new - a_old).dot(p.jump);
+    p.traction = p.r + a_new;
+    p.beta = beta;
+  }
 }
 
 void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
   const double w = law_->adhesion_energy(1.0) - law_->adhesion_energy(0.0);
+  energy.interference_work += law_change_work_;
+  law_change_work_ = 0;
+  account_recorded_ = true;
   const double dshift = gap_shift_ - accounted_shift_;
   accounted_shift_ = gap_shift_;
   // A moving obstacle is body 2 of its pairs: its displacement moves every jump.
@@ -63,8 +89,9 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
 }
 
 std::vector<double> InterfaceAssembler::save_energy_account() const {
-  std::vector<double> v = {accounted_shift_, accounted_obstacle_[0], accounted_obstacle_[1],
-                           accounted_obstacle_[2]};
+  std::vector<double> v = {accounted_shift_,       accounted_obstacle_[0],
+                           accounted_obstacle_[1], accounted_obstacle_[2],
+                           law_change_work_,       account_recorded_ ? 1.0 : 0.0};
   for (const AccountedPair& p : accounted_) {
     v.push_back(p.beta);
     for (const auto* x : {&p.jump, &p.traction, &p.r})
@@ -76,13 +103,16 @@ std::vector<double> InterfaceAssembler::save_energy_account() const {
 void InterfaceAssembler::load_energy_account(const std::vector<double>& v) {
   start_energy_account(); // sizes every pair's vectors
   const std::size_t n = static_cast<std::size_t>(dim_);
-  if (v.size() != 4 + accounted_.size() * (1 + 3 * n))
+  const std::size_t head = 6;
+  if (v.size() != head + accounted_.size() * (1 + 3 * n))
     throw Error("interface '" + iface_.name + "': the energy state has " +
                 std::to_string(v.size()) + " values, its " + std::to_string(accounted_.size()) +
-                " pairs need " + std::to_string(4 + accounted_.size() * (1 + 3 * n)));
+                " pairs need " + std::to_string(head + accounted_.size() * (1 + 3 * n)));
   accounted_shift_ = v[0];
   accounted_obstacle_ = {v[1], v[2], v[3]};
-  std::size_t at = 4;
+  law_change_work_ = v[4];
+  account_recorded_ = v[5] != 0.0;
+  std::size_t at = head;
   for (AccountedPair& p : accounted_) {
     p.beta = v[at++];
     for (auto* x : {&p.jump, &p.traction, &p.r})

@@ -43,6 +43,9 @@ StateArrays StaticAnalysis::Impl::save_state(std::size_t stages_done, double tim
   if (energy)
     for (auto& [name, values] : energy->save_state())
       out["energy." + name] = std::move(values);
+  // The energy control's excused error: without it a restart excused the whole error the run
+  // carried, and judged the increments after it otherwise than the uninterrupted run.
+  out["analysis.energy_control"] = energy_control.save_state();
   return out;
 }
 
@@ -79,6 +82,7 @@ void StaticAnalysis::Impl::load_state(const StateArrays& state) {
   // The energy balance so far (energy.csv continues it).
   energy = std::make_unique<EnergyLedger>(interfaces);
   energy->load_state(with_prefix(state, "energy."));
+  energy_control.load_state(state_array(state, "analysis.energy_control", 2));
   // The loads in force at the end of the last stage done (what the next one ramps from).
   if (stages_done > 0)
     assemble_loads(model.spec.stages[stages_done - 1], F_prev);

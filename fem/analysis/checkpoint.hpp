@@ -16,8 +16,13 @@
 
 namespace bipot {
 
-/// Version of the layout above; a file of another version is refused.
-constexpr std::uint32_t checkpoint_format_version = 1;
+/// Version of the layout above and of the arrays a complete state needs; a file of another
+/// version is refused. 2: the energy step control's state (analysis.energy_control) and the
+/// energy's part of the cut-back level (analysis.in_stage[6]), without which a restart judged
+/// its increments' energy otherwise than the uninterrupted run; and two more values at the
+/// head of every interface's energy account (a law change's work still to book, and whether
+/// a step was recorded).
+constexpr std::uint32_t checkpoint_format_version = 2;
 
 /// The bipot version that writes checkpoints (the project's version).
 std::string bipot_version();

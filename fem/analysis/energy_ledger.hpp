@@ -18,7 +18,8 @@ namespace bipot {
 /// Cumulative energies since the start of the run (kJ; axisymmetric: full revolution).
 struct EnergyTotals {
   double external_work = 0; ///< loads and support reactions on the bodies
-  /// Of prescribed interface motions: gaps (installation) and moving rigid obstacles.
+  /// Of prescribed interface motions: gaps (installation) and moving rigid obstacles; and the
+  /// change of the springs' energy when a stage puts another law in force.
   double interference_work = 0;
   double bulk_energy = 0;          ///< work of the internal forces (elastic energy, linear bulk)
   double interface_energy = 0;     ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now

@@ -1,7 +1,10 @@
 #include "fem/analysis/energy_step_control.hpp"
 
+#include "fem/core/error.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace bipot {
 
@@ -23,8 +26,8 @@ double dissipated(const EnergyTotals& t) {
 } // namespace
 
 void EnergyStepControl::begin_stage(double tolerance, const EnergyTotals& totals) {
-  // Coming from a stage without the control (or from a restart, which does not save the
-  // excused error), the error the run carries is what the control found, not what it made.
+  // Coming from a stage without the control, the error the run carries is what the control
+  // found, not what it made.
   if (!active()) excused_ = totals.balance_error();
   tolerance_ = tolerance;
 }
@@ -70,6 +73,14 @@ bool EnergyStepControl::may_grow(const EnergyTotals& before, const EnergyTotals&
 double EnergyStepControl::controlled_error(const EnergyTotals& totals) const {
   const double put_in = totals.work_put_in();
   return put_in > 0 ? std::abs(totals.balance_error() - excused_) / put_in : 0.0;
+}
+
+void EnergyStepControl::load_state(const std::vector<double>& state) {
+  if (state.size() != 2)
+    throw Error("energy step control state: needs 2 values (tolerance, excused error), has " +
+                std::to_string(state.size()));
+  tolerance_ = state[0];
+  excused_ = state[1];
 }
 
 } // namespace bipot

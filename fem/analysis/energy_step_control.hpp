@@ -21,10 +21,14 @@
 /// An increment still outside its budget at the smallest step allowed (a jump, whose energy
 /// goes into a snap no quasi-static ledger sees) is accepted and flagged, never retried, and
 /// its error `excused` from then on; as is the error the run carries into the first stage it
-/// controls (stages without the option, or before a restart). An increment inside its budget
-/// after which the run's error is still over tolerance × P is flagged too.
+/// controls (stages without the option). An increment inside its budget after which the run's
+/// error is still over tolerance × P is flagged too. A checkpoint saves the excused error and
+/// the tolerance in force (save_state), so that a restarted run judges its increments as the
+/// uninterrupted run did.
 
 #include "fem/analysis/energy_ledger.hpp"
+
+#include <vector>
 
 namespace bipot {
 
@@ -49,6 +53,12 @@ public:
   bool may_grow(const EnergyTotals& before, const EnergyTotals& after, double growth) const;
   /// |balance_error − excused| / work put in (0 without work).
   double controlled_error(const EnergyTotals& totals) const;
+
+  /// What the control carries from increment to increment and into the next stage, for
+  /// checkpoints: the tolerance in force and the excused error.
+  std::vector<double> save_state() const { return {tolerance_, excused_}; }
+  /// Restores save_state()'s values; throws bipot::Error if there are not two.
+  void load_state(const std::vector<double>& state);
 
 private:
   /// The increment's error, `factor` times over, inside its budget (class comment).

@@ -22,7 +22,8 @@ StateArrays StaticAnalysis::Impl::save_step_state() const {
                               static_cast<double>(p.level),
                               static_cast<double>(p.step),
                               static_cast<double>(p.planned_step),
-                              p.step_time};
+                              p.step_time,
+                              static_cast<double>(p.energy_level)};
   out["analysis.u_before_last"] = p.u_before_last;
   // Prescribed DOFs (global numbers, exact as doubles) and the values they ramp from.
   std::vector<double>& s = out["analysis.start"];
@@ -38,7 +39,7 @@ StateArrays StaticAnalysis::Impl::save_step_state() const {
 void StaticAnalysis::Impl::load_step_state(const StateArrays& state) {
   ResumePoint r;
   const std::vector<double>& position = state_array(state, "analysis.position", 3);
-  const std::vector<double>& in_stage = state_array(state, "analysis.in_stage", 6);
+  const std::vector<double>& in_stage = state_array(state, "analysis.in_stage", 7);
   StageProgress& p = r.progress;
   p.stage = static_cast<std::size_t>(position[0]);
   p.stage_time = position[1];
@@ -48,6 +49,7 @@ void StaticAnalysis::Impl::load_step_state(const StateArrays& state) {
   p.step = static_cast<int>(in_stage[3]);
   p.planned_step = static_cast<int>(in_stage[4]);
   p.step_time = in_stage[5];
+  p.energy_level = static_cast<int>(in_stage[6]);
   p.u_before_last = state_array(state, "analysis.u_before_last");
   if (p.last_size > 0 && p.u_before_last.size() != u.size())
     throw Error("analysis state: array 'analysis.u_before_last' holds " +

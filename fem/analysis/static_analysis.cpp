@@ -1,6 +1,5 @@
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/analysis/detail/static_analysis_impl.hpp"
-#include "fem/analysis/energy_step_control.hpp"
 
 namespace bipot {
 
@@ -41,15 +40,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
   summary = RunSummary{};
   summary.num_dofs = dofs.num_dofs();
   summary.steps = start_steps; // a restart numbers its increments on
-  if (!energy || (first_stage == 0 && !resume_point))
+  if (!energy || (first_stage == 0 && !resume_point)) {
     energy = std::make_unique<EnergyLedger>(interfaces);
+    energy_control = EnergyStepControl{};
+  }
   const int max_cutbacks = model.contact_solver.max_cutbacks;
   double time = start_time;
   // Interface resultants (per interface and component) of the last step and the largest
   // magnitudes seen, for the snap-back flag (restored by a restart).
   last_resultant.resize(interfaces.size(), {0, 0, 0});
   largest_resultant.resize(interfaces.size(), {0, 0, 0});
-  EnergyStepControl energy_control;
 
   for (std::size_t s = first_stage; s < model.spec.stages.size(); ++s) {
     const StageSpec& stage = model.spec.stages[s];
@@ -104,7 +104,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     energy_control.begin_stage(stage.energy_tolerance, energy->totals());
     // energy_halvings: of the increment under way; energy_level: the part of the cut-back
     // level owed to the energy budget, which says nothing of the solver's convergence.
-    int traced_steps = 0, energy_halvings = 0, energy_level = 0;
+    int traced_steps = 0, energy_halvings = 0;
+    int& energy_level = progress.energy_level;
     // A step the energy budget shortened that then fails to converge at the smallest step
     // (a dissipation step too short for the Jacobian at a limit point) goes back to the last
     // attempt that converged and keeps it, flagged over the budget: the control never makes
@@ -348,10 +349,13 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.uzawa_updates = log.uzawa_updates;
       rep.residual = log.history.empty() ? 0.0 : log.history.back();
       rep.residual_history = log.history;
-      rep.cutbacks = level;
+      // The level split by what asked for it: convergence failures (the CSV flag `cutbacks`)
+      // and the energy budget, whose halvings counted as cut-backs before.
+      rep.energy_cutbacks = std::min(energy_level, level);
+      rep.cutbacks = level - rep.energy_cutbacks;
       rep.staggered = log.staggered;
       // A traced step on which the load factor falls is on the unstable branch.
-      rep.unstable = level > energy_level || log.staggered > 0 || (rep.traced && lambda < done);
+      rep.unstable = rep.cutbacks > 0 || log.staggered > 0 || (rep.traced && lambda < done);
       // Snap-back: a resultant component lost over 20% of the largest value it has had, and
       // the loss is over 5% of the largest interface force of the model (so that a small
       // interface unloading smoothly, like a pile toe, is not flagged).

@@ -62,8 +62,14 @@ struct StepReport {
   std::vector<double> residual_history;
   double seconds = 0;        ///< wall time of the increment, its failed attempts included
   double failed_seconds = 0; ///< of which in attempts that failed and were cut back
-  int cutbacks = 0;          ///< halvings needed before this increment converged
-  int uzawa_updates = 0;     ///< multiplier updates (bipotential_uzawa)
+  /// The halving level the step was solved at owed to convergence failures (of this or earlier
+  /// increments of the stage, not yet grown back); the step is the planned increment over
+  /// 2^(cutbacks + energy_cutbacks).
+  int cutbacks = 0;
+  /// The part of the halving level owed to the stage's energy_tolerance (its halvings of this
+  /// or earlier increments, not yet grown back), which says nothing of the solver.
+  int energy_cutbacks = 0;
+  int uzawa_updates = 0; ///< multiplier updates (bipotential_uzawa)
   /// β updates of the staggered fallback (0 unless the increment jumped: a debonding
   /// snap-back the monolithic iteration could not cross even at the smallest step).
   int staggered = 0;
@@ -79,8 +85,8 @@ struct StepReport {
   /// The run's energy balance up to this increment (energy.csv).
   EnergyTotals energy;
   /// Halvings the stage's energy_tolerance asked for before this increment was kept (each
-  /// a converged attempt whose energy balance broke the budget; `cutbacks`, the level the
-  /// step was solved at, includes them).
+  /// a converged attempt whose energy balance broke the budget; counted in energy_cutbacks,
+  /// never in cutbacks).
   int energy_halvings = 0;
   /// Kept over the stage's energy_tolerance: at the smallest step (max_cutbacks) the
   /// increment's error still broke its budget (a jump; its own error is excused from then

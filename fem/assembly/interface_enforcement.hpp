@@ -51,7 +51,7 @@ const char* to_string(PairStatus status);
 /// stored in it now and the increments of what it dissipates and of the work of prescribed
 /// interface motions (docs/theory.md, "Energy balance").
 struct InterfaceEnergy {
-  double interference_work = 0;    ///< of gap shifts and moving obstacles
+  double interference_work = 0;    ///< of gap shifts, moving obstacles and law changes
   double stored = 0;               ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
   double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost
   double viscous_dissipation = 0;  ///< mean (β Ẽ − w)⁺ of the step × (β_old − β) A

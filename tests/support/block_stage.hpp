@@ -13,6 +13,25 @@ inline const std::string block_on_base_mesh = "mesh:\n  blocks:\n    cell: quad4
                                               "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
                                               "    regions: [base, block]\n";
 
+/// Up to `stages:`, the block on an elastic base (E = 1e5 kPa, ν = 0.3) joined by an RCCM joint
+/// (C_n = C_t = 1e6 kN/m³, w = 1e-4 kJ/m², μ = 0.3, α = 0.01 kN·s/m), solved by a direct
+/// solver: `block` is the block's material and `contact_solver` the contact solver's keys,
+/// both YAML flow maps.
+inline std::string block_on_rccm_joint(const std::string& block,
+                                       const std::string& contact_solver) {
+  return std::string("kinematics: plane_strain\n") + block_on_base_mesh +
+         "materials:\n"
+         "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
+         "  block: " +
+         block +
+         "\nlinear_solver: {method: direct}\n"
+         "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
+         "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
+         "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.01}\n"
+         "contact_solver: " +
+         contact_solver + "\nstages:\n";
+}
+
 /// The stage `name` with the bottom fixed and the top moved to (x, y) (m) at its end over
 /// `increments`; `extra` (indented YAML lines) is inserted before its conditions.
 inline std::string block_stage(const std::string& name, double x, double y,

@@ -37,17 +37,10 @@ using test::block_stage;
 // starts from fresh factors) or another rank count could take other cut-backs. Each new
 // solver change moved that edge (max_iterations 10, then 8, were chosen so before).
 const std::string input =
-    std::string("kinematics: plane_strain\n") + test::block_on_base_mesh +
-    "materials:\n"
-    "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
-    "  block: {type: von_mises, youngs_modulus: 2.0e4, poissons_ratio: 0.25, yield_stress: 30.0, "
-    "hardening_modulus: 2.0e3}\n"
-    "linear_solver: {method: direct}\n"
-    "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
-    "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
-    "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.01}\n"
-    "contact_solver: {type: generalized_newton, tolerance: 1.0e-11, max_iterations: 6}\n"
-    "stages:\n" +
+    test::block_on_rccm_joint(
+        "{type: von_mises, youngs_modulus: 2.0e4, poissons_ratio: 0.25, yield_stress: 30.0, "
+        "hardening_modulus: 2.0e3}",
+        "{type: generalized_newton, tolerance: 1.0e-11, max_iterations: 6}") +
     block_stage("press", 0, -2e-3) + block_stage("shear", 6e-3, -2e-3, "", 4) +
     block_stage("lift", 8e-3, 1e-3,
                 "    interfaces: {joint: {parameters: {friction_coefficient: 0.5}}}\n", 4);

@@ -31,16 +31,8 @@ namespace {
 using test::block_stage;
 
 const std::string input =
-    std::string("kinematics: plane_strain\n") + test::block_on_base_mesh +
-    "materials:\n"
-    "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
-    "  block: {type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}\n"
-    "linear_solver: {method: direct}\n"
-    "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
-    "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
-    "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.01}\n"
-    "contact_solver: {type: generalized_newton, tolerance: 1.0e-13}\n"
-    "stages:\n" +
+    test::block_on_rccm_joint("{type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}",
+                              "{type: generalized_newton, tolerance: 1.0e-13}") +
     block_stage("press", 0, -1e-3, "    reset_displacements: true\n") +
     block_stage("shear", 2e-3, 0) +
     block_stage("shear_more", 6e-3, 0,

@@ -5,7 +5,13 @@
 // - an interface bonded in a first stage and frictional later is split and tied on its
 //   pairs: while bonded it equals the shared-node model (perfect bonding in every stage);
 // - bonded installation, then RCCM: equals the RCCM model loaded the same way, since the
-//   installation (uniaxial compression of a homogeneous column) leaves no jump either way.
+//   installation (uniaxial compression of a homogeneous column) leaves no jump either way;
+// - RCCM stiffnesses doubled by a stage while the joint debonds (α > 0): the energy balance
+//   books the springs' change at the switch, ½ A β² (ΔC_n g_n² + ΔC_t ‖g_t‖²) at the
+//   recorded jumps, as interference work, and the first step's viscous dissipation is the
+//   trapezoid of the new law's driving force (β E − w)⁺, E = C_n ⟨g_n⟩₊² + C_t ‖g_t‖², times
+//   the loss, both computed here from the pairs' states (to 1e-12 and 1e-10 relative).
+//   Before, the change was booked nowhere and the step started from the old law's force.
 #include "fem/analysis/model.hpp"
 #include "fem/analysis/static_analysis.hpp"
 #include "fem/input/problem_reader.hpp"
@@ -16,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -159,6 +166,56 @@ TEST(StagedInterface, BondedInstallationThenRccmEqualsRccmThroughout) {
   EXPECT_EQ(staged.min_beta[3], 1.0);
   EXPECT_EQ(rccm_only.min_beta[3], 0.8);
   EXPECT_LT(rccm_only.min_beta[7], 0.8);
+}
+
+TEST(StagedInterface, StiffnessChangeIsBookedAndTheNewLawDrivesTheDissipation) {
+  const double cn = 1e6, ct = 1e6, w = 1e-4; // block_on_rccm_joint's; doubled by `stiffer`
+  const std::string text =
+      test::block_on_rccm_joint(stiff_block, "{type: generalized_newton, tolerance: 1.0e-12}") +
+      block_stage("press", 0, -2e-3, "", 2) + block_stage("shear", 2e-3, -2e-3, "", 4) +
+      block_stage("stiffer", 2.5e-3, -2e-3,
+                  "    interfaces: {joint: {parameters: {normal_stiffness: 2.0e6, "
+                  "tangential_stiffness: 2.0e6, adhesion_viscosity: 1.0}}}\n",
+                  2);
+  // α = 0.01 up to the switch, 1 after it: β still falls in the first step of `stiffer`.
+  const Model model = bipot::test::model_from_text(text, "stiffer.yaml");
+  StaticAnalysis analysis(model);
+  std::vector<std::vector<PairResult>> pairs;
+  std::vector<EnergyTotals> energy;
+  std::vector<std::string> stage;
+  analysis.run([&](const StepReport& r) {
+    pairs.push_back(analysis.interfaces()[0]->results());
+    energy.push_back(r.energy);
+    stage.push_back(r.stage);
+  });
+  const std::size_t k = std::find(stage.begin(), stage.end(), "stiffer") - stage.begin();
+  ASSERT_TRUE(k > 0 && k < stage.size());
+  const auto& weights = model.interfaces[0].pairs;
+  double springs = 0, viscous = 0, lost = 0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    const PairResult &before = pairs[k - 1][i], &after = pairs[k][i];
+    const auto tangential = [](const PairResult& p) { return p.jump.tail(p.jump.size() - 1); };
+    springs += 0.5 * weights[i].weight * before.beta * before.beta *
+               (cn * before.jump(0) * before.jump(0) + ct * tangential(before).squaredNorm());
+    const auto excess = [&](const PairResult& p) {
+      const double gn = std::max(p.jump(0), 0.0);
+      return std::max(p.beta * (2 * cn * gn * gn + 2 * ct * tangential(p).squaredNorm()) - w, 0.0);
+    };
+    viscous +=
+        weights[i].weight * 0.5 * (excess(before) + excess(after)) * (before.beta - after.beta);
+    lost += weights[i].weight * (before.beta - after.beta);
+  }
+  // Something to check: the springs held energy and adhesion was lost in that step.
+  EXPECT_GT(springs, 1e-6);
+  EXPECT_GT(lost, 1e-4);
+  EXPECT_GT(viscous, 1e-9);
+  std::printf("springs %.6e viscous %.6e lost %.6e; ledger %.6e %.6e\n", springs, viscous, lost,
+              energy[k].interference_work - energy[k - 1].interference_work,
+              energy[k].viscous_dissipation - energy[k - 1].viscous_dissipation);
+  EXPECT_NEAR(energy[k].interference_work - energy[k - 1].interference_work, springs,
+              1e-12 * springs);
+  EXPECT_NEAR(energy[k].viscous_dissipation - energy[k - 1].viscous_dissipation, viscous,
+              1e-10 * viscous);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include "fem/analysis/detail/increment_solver.hpp"
 #include "fem/analysis/detail/path_step.hpp"
 #include "fem/analysis/detail/staggered_increment.hpp"
+#include "fem/analysis/energy_step_control.hpp"
 #include "fem/analysis/initial_stress.hpp"
 #include "fem/analysis/path_control.hpp"
 #include "fem/analysis/result_writer.hpp"
@@ -98,6 +99,8 @@ struct StaticAnalysis::Impl {
   const StaticAnalysis* this_analysis = nullptr; ///< handed to the writer
   RunSummary summary;
   std::unique_ptr<EnergyLedger> energy; ///< created by run(), once the interfaces exist
+  /// The stages' energy_tolerance (a member, not a local of run(): checkpoints save it).
+  EnergyStepControl energy_control;
   /// ‖reaction‖ at the last converged increment: a force scale for the relative residual.
   /// Without it, an increment that the predictor already solves (a linear model under
   /// proportional loading) measured its residual against its own round-off and never
@@ -273,8 +276,10 @@ struct StaticAnalysis::Impl {
     double done = 0, last_size = 0;    ///< converged λ; size of the last converged increment
     std::vector<double> u_before_last; ///< u at the start of the last converged increment
     int level = 0, step = 0;           ///< cut-back level; converged increments so far
-    int planned_step = 0;              ///< the planned level k the last increment ended on
-    double step_time = 0;              ///< pseudo-time at the end of the last increment
+    /// The part of `level` owed to the energy budget (the rest: convergence failures).
+    int energy_level = 0;
+    int planned_step = 0; ///< the planned level k the last increment ended on
+    double step_time = 0; ///< pseudo-time at the end of the last increment
   };
   StageProgress progress;
   /// Loaded from a checkpoint within a stage: the stage's start values, restored by

@@ -1,6 +1,7 @@
-// The closing summary's account of the energy step control: the worst balance error it prints
-// is energy.csv's (every error counted); when increments were kept over the budget, the
-// controlled worst (their own errors left out) is given beside it, never instead of it.
+// How the apps tell what the stepping did. The closing summary's account of the energy step
+// control: the worst balance error it prints is energy.csv's (every error counted); when
+// increments were kept over the budget, the controlled worst (their own errors left out) is
+// given beside it, never instead of it.
 #include "apps/common/step_text.hpp"
 
 #include <gtest/gtest.h>
@@ -31,6 +32,22 @@ TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
   EXPECT_EQ(none.find("6.8e-07"), std::string::npos) << none;
   // A run without the control says nothing of it.
   EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
+}
+
+// A progress line says how short the step was and how much of that the energy budget asked
+// for: a convergence cut-back alone, the energy alone, or both.
+TEST(StepFlags, TellEnergyHalvingsFromCutBacks) {
+  StepReport r;
+  r.planned_step = 1;
+  r.cutbacks = 2;
+  EXPECT_EQ(step_flags(r), "  (1/4 step)");
+  r.cutbacks = 0;
+  r.energy_cutbacks = 2;
+  r.energy_halvings = 1;
+  EXPECT_EQ(step_flags(r), "  (1/4 step for the energy, energy: 1 halving)");
+  r.cutbacks = 1;
+  r.energy_halvings = 0;
+  EXPECT_EQ(step_flags(r), "  (1/8 step, 2 of its 3 halvings for the energy)");
 }
 
 } // namespace
