@@ -182,9 +182,11 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   const int dim = spatial_dim(model_.kinematics);
   const int nv = voigt_size(dim);
   Field displacement{"displacement", dim, analysis.displacement()};
-  Field owner{"rank", 1, std::vector<double>(cells.size(), rank_)};
-  std::vector<Field> cell_fields = {Field{"strain", nv, strain}, Field{"stress", nv, stress},
-                                    owner};
+  // Moved in, not listed in braces: an initializer list copies every array.
+  std::vector<Field> cell_fields;
+  cell_fields.push_back(Field{"strain", nv, std::move(strain)});
+  cell_fields.push_back(Field{"stress", nv, std::move(stress)});
+  cell_fields.push_back(Field{"rank", 1, std::vector<double>(cells.size(), rank_)});
   // The materials' own fields (equivalent plastic strain, yield indicator, ...), cell averages.
   const std::vector<std::string> names = analysis.output_field_names();
   const std::vector<double> values = analysis.cell_output_fields();
