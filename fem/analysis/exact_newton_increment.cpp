@@ -119,6 +119,9 @@ double ExactNewtonIncrement::whole_residual(const Increment& inc, double dtau) {
 
 bool ExactNewtonIncrement::condense(Increment& inc, IncrementLog& log) {
   const auto t0 = std::chrono::steady_clock::now();
+  // S changes: the old Newton matrix is no preconditioner. Its factors go before MUMPS
+  // factorises, the run's peak out of core (at 307k DOFs: 492 -> 474 MB).
+  newton_matrix_.reset();
   try {
     // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
     // residual check after each increment would catch a K that is not.
@@ -130,7 +133,6 @@ bool ExactNewtonIncrement::condense(Increment& inc, IncrementLog& log) {
   ctx_.summary.setup_seconds += seconds_since(t0);
   ++ctx_.summary.matrix_setups;
   schur_ready_ = true;
-  newton_matrix_.reset(); // S changed: the old Newton matrix is no preconditioner
   schur_constrained_ = inc.constrained_dofs;
   return true;
 }

@@ -143,6 +143,17 @@ template <class Matrix> void ReusedLuSolver::factorize(const Matrix& J, bool sin
   last_iterations_ = 0; // a solve's count: the iterations on the factors it ends with
 }
 
+void ReusedLuSolver::reset() {
+  // The LU objects refer to the arrays: they go first.
+  lu_.reset();
+  lu_single_.reset();
+  split_.reset();
+  split_single_.reset();
+  factors_.resize(0, 0);
+  factors_single_.resize(0, 0);
+  factorized_ = false;
+}
+
 Eigen::VectorXd ReusedLuSolver::solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b,
                                       double accept) {
   return solve_any(J, b, accept);

@@ -57,8 +57,9 @@ public:
   Eigen::VectorXd solve(const CondensedNewtonMatrix& J, const Eigen::VectorXd& b, double accept);
   /// GMRES iterations within which a solve meets the tight acceptance whatever `accept`.
   static constexpr int cheap_iterations = 10;
-  /// Drop the factors (the matrices to come are unrelated to the last one).
-  void reset() { factorized_ = false; }
+  /// Drop the factors and free their memory (the matrices to come are unrelated to the last
+  /// one).
+  void reset();
   /// Keep the factors of later factorisations in single precision (float).
   void set_single_precision_factors(bool single) { single_ = single; }
 
