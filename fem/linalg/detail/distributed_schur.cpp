@@ -5,6 +5,7 @@
 
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "fem/linalg/detail/mumps_diagnosis.hpp"
 #include "fem/linalg/detail/mumps_out_of_core.hpp"
 
 #include <dmumps_c.h>
@@ -79,12 +80,8 @@ struct DistributedSchur::Impl {
     dmumps_c(&id);
     const int code = id.infog[0];
     if (code >= 0) return;
-    std::string why = code == -10   ? "numerically singular matrix (MUMPS INFOG(1) = -10)"
-                      : code == -13 ? "memory allocation failed (MUMPS INFOG(1) = -13)"
-                                    : "MUMPS error INFOG(1) = " + std::to_string(code) +
-                                          ", INFOG(2) = " + std::to_string(id.infog[1]);
     throw SolverError(std::string("direct solver (mumps, distributed) ") + what +
-                      " failed: " + why);
+                      " failed: " + mumps_error(code, id.infog[1], id.icntl[21] != 0));
   }
 
   // This rank's entries of A in the same order every time (A's structure is fixed): a

@@ -2,6 +2,7 @@
 // matrices with BLAS-3 kernels and a nested-dissection-type ordering, which on our 2D meshes
 // factorises 3 times faster than KLU2's column-by-column LU at 78k DOFs and 10 times at 306k
 // (with OpenBLAS; docs/performance.md).
+#include "fem/linalg/detail/mumps_diagnosis.hpp"
 #include "fem/linalg/detail/mumps_out_of_core.hpp"
 #include "fem/linalg/detail/root_factorization.hpp"
 
@@ -15,19 +16,6 @@
 namespace bipot::detail {
 
 namespace {
-
-// INFOG(1) codes that users can act on; the rest are reported by number (MUMPS manual §8).
-std::string mumps_error(int code, int detail) {
-  switch (code) {
-  case -10:
-    return "numerically singular matrix (MUMPS INFOG(1) = -10)";
-  case -13:
-    return "memory allocation failed (MUMPS INFOG(1) = -13, " + std::to_string(detail) + " items)";
-  default:
-    return "MUMPS error INFOG(1) = " + std::to_string(code) +
-           ", INFOG(2) = " + std::to_string(detail);
-  }
-}
 
 class MumpsFactorization final : public RootFactorization {
 public:
@@ -82,7 +70,7 @@ public:
         id_.icntl[13] = std::max(40, 2 * id_.icntl[13]); // ICNTL(14): % extra workspace
         continue;
       }
-      throw std::runtime_error(mumps_error(code, id_.infog[1]));
+      throw std::runtime_error(mumps_error(code, id_.infog[1], id_.icntl[21] != 0));
     }
   }
 
@@ -96,7 +84,8 @@ private:
   void call(int job) {
     id_.job = job;
     dmumps_c(&id_);
-    if (id_.infog[0] < 0) throw std::runtime_error(mumps_error(id_.infog[0], id_.infog[1]));
+    if (id_.infog[0] < 0)
+      throw std::runtime_error(mumps_error(id_.infog[0], id_.infog[1], id_.icntl[21] != 0));
   }
 
   DMUMPS_STRUC_C id_{};

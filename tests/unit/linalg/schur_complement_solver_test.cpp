@@ -1,6 +1,7 @@
 #include "chain_problem.hpp"
 #include "fem/core/error.hpp"
 #include "fem/linalg/communicator.hpp"
+#include "fem/linalg/detail/mumps_diagnosis.hpp"
 #include "fem/linalg/schur_complement_solver.hpp"
 
 #include <unistd.h>
@@ -170,6 +171,22 @@ TEST(SchurComplementSolver, OutOfCoreFactorsGiveTheSameSolutionAndAreRemoved) {
   }
   EXPECT_EQ(files(), 0) << "factor files left in " << dir;
   fs::remove_all(dir);
+}
+
+// What a MUMPS failure tells the user: the codes by name, and for a failed allocation what
+// to change (factors to files), unless they were in files already.
+TEST(MumpsDiagnosis, NamesTheCodesAndTellsWhatToChange) {
+  const std::string memory = detail::mumps_error(-13, 123456, false);
+  EXPECT_NE(memory.find("memory allocation failed (MUMPS INFOG(1) = -13, INFOG(2) = 123456)"),
+            std::string::npos)
+      << memory;
+  EXPECT_NE(memory.find("out_of_core: true"), std::string::npos) << memory;
+  const std::string on_disk = detail::mumps_error(-13, 7, true);
+  EXPECT_EQ(on_disk.find("out_of_core: true"), std::string::npos) << on_disk;
+  EXPECT_NE(on_disk.find("more memory"), std::string::npos) << on_disk;
+  EXPECT_EQ(detail::mumps_error(-10, 3, false),
+            "numerically singular matrix (MUMPS INFOG(1) = -10, INFOG(2) = 3)");
+  EXPECT_EQ(detail::mumps_error(-40, 0, false), "MUMPS INFOG(1) = -40, INFOG(2) = 0");
 }
 
 } // namespace
