@@ -30,7 +30,8 @@ struct LinearSolverOptions {
 };
 
 /// Where MUMPS writes its factors under these options: the system's temporary directory
-/// (TMPDIR) if `out_of_core`, else "" (in memory).
+/// (TMPDIR) if `out_of_core`, else "" (in memory). Throws bipot::Error if there is none (TMPDIR
+/// not a directory) or its path is too long for MUMPS.
 std::string factor_directory(const LinearSolverOptions& options);
 
 /// Outcome of LinearSolver::solve().

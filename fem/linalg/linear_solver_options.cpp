@@ -2,6 +2,9 @@
 // editing docs or defaults does not recompile the Belos/MueLu translation unit.
 #include "fem/linalg/linear_solver.hpp"
 
+#include "fem/core/error.hpp"
+
+#include <cstdlib>
 #include <filesystem>
 
 namespace bipot {
@@ -72,7 +75,19 @@ ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
 }
 
 std::string factor_directory(const LinearSolverOptions& options) {
-  return options.out_of_core ? std::filesystem::temp_directory_path().string() : std::string();
+  if (!options.out_of_core) return "";
+  std::error_code ec;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+  if (ec)
+    throw Error("linear_solver.out_of_core: no temporary directory for the factor files (" +
+                ec.message() + "; TMPDIR is '" +
+                (std::getenv("TMPDIR") ? std::string(std::getenv("TMPDIR")) : std::string()) +
+                "'): set TMPDIR to a writable directory");
+  // MUMPS takes the directory in a fixed 256-character field: a longer path would be cut.
+  if (dir.string().size() >= 256)
+    throw Error("linear_solver.out_of_core: the temporary directory '" + dir.string() +
+                "' is longer than the 255 characters MUMPS takes; set TMPDIR to a shorter path");
+  return dir.string();
 }
 
 } // namespace bipot

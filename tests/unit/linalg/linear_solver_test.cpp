@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace bipot {
@@ -557,6 +558,47 @@ TEST(LinearSolver, OutOfCoreDirectSolveMatchesInMemoryAndRemovesItsFiles) {
   EXPECT_LT(relative_error(x_disk, [&](Index i) { return chain.exact(i); }), 1e-12);
   x_disk.axpy(-1.0, x_memory);
   EXPECT_LE(x_disk.norm2(), 1e-14 * x_memory.norm2());
+}
+
+// A TMPDIR out_of_core cannot use is reported by name, not left to MUMPS (which would write
+// the factors elsewhere or fail later without saying why).
+TEST(LinearSolver, OutOfCoreNeedsAUsableTemporaryDirectory) {
+  namespace fs = std::filesystem;
+  const char* old = std::getenv("TMPDIR");
+  const std::string saved = old ? old : "";
+  const fs::path base = fs::temp_directory_path() / ("bipot_tmpdir_" + std::to_string(getpid()));
+  fs::remove_all(base);
+  fs::create_directories(base);
+  LinearSolverOptions o;
+  o.out_of_core = true;
+  auto message = [&] {
+    try {
+      factor_directory(o);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const fs::path file = base / "a_file";
+  std::ofstream(file) << "not a directory";
+  setenv("TMPDIR", file.c_str(), 1);
+  const std::string not_a_directory = message();
+  fs::path deep = base;
+  for (int i = 0; i < 3; ++i)
+    deep /= std::string(90, 'd');
+  fs::create_directories(deep);
+  setenv("TMPDIR", deep.c_str(), 1);
+  const std::string too_long = message();
+  if (saved.empty())
+    unsetenv("TMPDIR");
+  else
+    setenv("TMPDIR", saved.c_str(), 1);
+  fs::remove_all(base);
+  EXPECT_NE(not_a_directory.find("set TMPDIR to a writable directory"), std::string::npos)
+      << not_a_directory;
+  EXPECT_NE(too_long.find("longer than the 255 characters"), std::string::npos) << too_long;
+  o.out_of_core = false;
+  EXPECT_EQ(factor_directory(o), "");
 }
 
 TEST(LinearSolverOptions, SchemaDefaultsAreTheStructDefaults) {
