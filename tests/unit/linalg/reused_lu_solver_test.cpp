@@ -263,6 +263,16 @@ TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
     }
   }
   EXPECT_EQ(single.factorizations(), 1);
+  // reset() frees the float factors (their arrays go, not only a flag): the next solve
+  // factorises again and meets the same tolerance.
+  single.reset();
+  {
+    Eigen::MatrixXd dense;
+    J1.to_dense(dense);
+    const Eigen::VectorXd x1 = single.solve(J1, b, 1e-11);
+    EXPECT_EQ(single.factorizations(), 2);
+    EXPECT_LT(relative_residual(dense, x1, b), 1e-11);
+  }
   // Beyond what float factors can precondition (condition number ~1e12): double takes over.
   Eigen::MatrixXd hard = test_matrix(60, 11);
   hard.row(3) = hard.row(4) + 1e-12 * hard.row(3);
