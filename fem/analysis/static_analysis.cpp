@@ -471,7 +471,7 @@ std::vector<double> StaticAnalysis::reaction(const std::string& set) const {
 void StaticAnalysis::cell_results(std::vector<Index>& cells, std::vector<double>& strain,
                                   std::vector<double>& stress) const {
   cells = impl_->solid.owned_cells();
-  impl_->solid.cell_averages(strain, stress);
+  impl_->solid.cell_averages(impl_->u, strain, stress);
 }
 
 std::vector<std::string> StaticAnalysis::output_field_names() const {

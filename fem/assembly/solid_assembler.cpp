@@ -39,16 +39,11 @@ SolidAssembler::SolidAssembler(const Mesh& mesh, Kinematics kin, const DofMap& d
     state_.assign(num_state, 0.0);
     trial_state_ = state_;
   }
-  const std::size_t n = owned_cells_.size() * nv_;
-  cell_strain_.assign(n, 0.0);
-  cell_stress_.assign(n, 0.0);
-  trial_cell_strain_ = cell_strain_;
-  trial_cell_stress_ = cell_stress_;
 }
 
 SolidAssembler::~SolidAssembler() = default;
 
-ElementValues& SolidAssembler::values_for(CellType type) {
+ElementValues& SolidAssembler::values_for(CellType type) const {
   auto it = values_.find(type);
   if (it == values_.end())
     it = values_
@@ -76,9 +71,9 @@ void SolidAssembler::set_initial_stress(
 
 // Integrates each owned cell at `u`, then runs `kernel(dofs, f_e, K_e)`: f_e = f_int,e and,
 // if `tangent`, K_e = the tangent (row-major), both sized num_dofs; otherwise K_e stays empty
-// (internal forces alone skip the B^T D B products). Also records the trial cell averages and,
-// if `point_stress` is given, calls it with (point index, strain of `u`, material stress,
-// whether the material has internal variables) at every point.
+// (internal forces alone skip the B^T D B products). If `point_stress` is given, also calls it with
+// (point index, strain of `u`, material stress, whether the material has internal variables) at
+// every point.
 template <class CellKernel>
 void SolidAssembler::loop(
     const std::vector<double>& u, bool tangent, CellKernel&& kernel,
@@ -109,11 +104,6 @@ void SolidAssembler::loop(
     const int nk = tangent ? nd : 0;
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> Km(
         K_e.data(), nk, nk);
-    double* avg_strain = &trial_cell_strain_[k * nv_];
-    double* avg_stress = &trial_cell_stress_[k * nv_];
-    std::fill(avg_strain, avg_strain + nv_, 0.0);
-    std::fill(avg_stress, avg_stress + nv_, 0.0);
-    const double share = 1.0 / ev.num_points();
     for (int q = 0; q < ev.num_points(); ++q) {
       const Index p = qp_offset_[k] + q;
       ev.strain_displacement(q, B);
@@ -129,10 +119,6 @@ void SolidAssembler::loop(
                  new_state ? new_state + q * ns : nullptr);
       if (point_stress) point_stress(p, eps, sig, ns > 0);
       const Voigt total = sig + sig0;
-      for (int i = 0; i < nv_; ++i) {
-        avg_strain[i] += share * eps(i);
-        avg_stress[i] += share * total(i);
-      }
       const double w = ev.JxW(q);
       f.noalias() += w * (B.transpose() * total);
       if (!tangent) continue;
@@ -190,8 +176,6 @@ void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVec
 }
 
 void SolidAssembler::commit() {
-  cell_strain_ = trial_cell_strain_;
-  cell_stress_ = trial_cell_stress_;
   state_ = trial_state_;
 }
 
@@ -216,9 +200,6 @@ void SolidAssembler::absorb_stress_into_initial(const std::vector<double>& u) {
       else
         sigma0_[p * nv_ + i] += added[p * nv_ + i];
     }
-  // Stresses are unchanged and the strains restart from zero.
-  std::fill(cell_strain_.begin(), cell_strain_.end(), 0.0);
-  trial_cell_strain_ = cell_strain_;
 }
 
 std::vector<std::string> SolidAssembler::output_field_names() const {
@@ -265,9 +246,45 @@ void SolidAssembler::add_to_pattern(SparsityPattern& pattern, const Constraints*
   }
 }
 
-void SolidAssembler::cell_averages(std::vector<double>& strain, std::vector<double>& stress) const {
-  strain = cell_strain_;
-  stress = cell_stress_;
+void SolidAssembler::cell_averages(const std::vector<double>& u, std::vector<double>& strain,
+                                   std::vector<double>& stress) const {
+  strain.assign(owned_cells_.size() * nv_, 0.0);
+  stress.assign(owned_cells_.size() * nv_, 0.0);
+  std::vector<Index> cell_dofs;
+  std::vector<double> scratch;
+  Eigen::VectorXd u_e;
+  Eigen::MatrixXd B;
+  Voigt eps, eps_material, sig, sig0 = Voigt::Zero(nv_);
+  VoigtMatrix D;
+  for (std::size_t k = 0; k < owned_cells_.size(); ++k) {
+    const Index c = owned_cells_[k];
+    ElementValues& ev = values_for(mesh_.cell_types[c]);
+    ev.reinit(mesh_, c);
+    dofs_.cell_dofs(mesh_, c, cell_dofs);
+    u_e.resize(ev.num_dofs());
+    B.resize(nv_, ev.num_dofs());
+    for (int a = 0; a < ev.num_dofs(); ++a)
+      u_e[a] = u[cell_dofs[a]];
+    const Material& mat = *materials_[mesh_.cell_regions[c]];
+    const int ns = mat.num_state_variables();
+    scratch.resize(ns);
+    const double share = 1.0 / ev.num_points();
+    for (int q = 0; q < ev.num_points(); ++q) {
+      const Index p = qp_offset_[k] + q;
+      ev.strain_displacement(q, B);
+      eps = B * u_e;
+      if (!sigma0_.empty()) sig0 = Eigen::Map<const Eigen::VectorXd>(&sigma0_[p * nv_], nv_);
+      eps_material = eps;
+      if (ns > 0 && !strain_offset_.empty())
+        eps_material += Eigen::Map<const Eigen::VectorXd>(&strain_offset_[p * nv_], nv_);
+      // From the committed internal variables the converged strain is an elastic trial that
+      // returns the converged stress (to round-off); the scratch state is not kept.
+      mat.update(eps_material, sig0, ns > 0 ? &state_[state_offset_[k] + q * ns] : nullptr, sig, D,
+                 ns > 0 ? scratch.data() : nullptr);
+      Eigen::Map<Eigen::VectorXd>(&strain[k * nv_], nv_) += share * eps;
+      Eigen::Map<Eigen::VectorXd>(&stress[k * nv_], nv_) += share * (sig + sig0);
+    }
+  }
 }
 
 } // namespace bipot

@@ -34,17 +34,16 @@ public:
   void set_initial_stress(const std::function<Voigt(const std::array<double, 3>&, int)>& sigma0);
 
   /// For the total displacement `u` (all global DOFs, replicated): adds the condensed local
-  /// systems K_e du = −f_int,e to `K` (if not null) and `R`. Trial cell averages of strain
-  /// and stress are kept for commit(). `removed` (if not null) receives the entries of the
-  /// local matrices that the elimination takes out, those in a constrained row or column
-  /// (LinearBulkResidual rebuilds the residual from them and K).
+  /// systems K_e du = −f_int,e to `K` (if not null) and `R`. `removed` (if not null) receives the
+  /// entries of the local matrices that the elimination takes out, those in a constrained row or
+  /// column (LinearBulkResidual rebuilds the residual from them and K).
   void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
                 DistributedVector& R, SparseMatrix* removed = nullptr);
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
-  /// Accepts the last trial state (end of a converged increment): cell averages and the
-  /// materials' internal variables. Until then every assembly starts again from the
+  /// Accepts the last trial state (end of a converged increment): the materials' internal
+  /// variables. Until then every assembly starts again from the
   /// committed internal variables, so a failed (cut-back) increment leaves no trace.
   void commit();
 
@@ -58,8 +57,8 @@ public:
 
   /// The committed state of the owned cells for a checkpoint (solid_state.cpp): "cells" (global
   /// ids), "points" (quadrature points of each), and every per-point and per-cell array
-  /// (today σ0 as "point.initial_stress", the committed averages as "cell.strain" and
-  /// "cell.stress"), cell after cell, each with its values per cell ("<name>.count"). Keyed by
+  /// (today σ0 as "point.initial_stress", the internal variables and the strain offsets), cell
+  /// after cell, each with its values per cell ("<name>.count"). Keyed by
   /// global cell id, so that the arrays gathered from every rank restore the state at any
   /// rank count. A new array is one line in state_array_refs().
   StateArrays save_state() const;
@@ -76,9 +75,12 @@ public:
   void add_to_pattern(SparsityPattern& pattern, const Constraints* touching = nullptr) const;
   /// Whether an initial stress is set (f_int(0) ≠ 0).
   bool has_initial_stress() const { return !sigma0_.empty(); }
-  /// Committed cell averages (over quadrature points) of strain and stress of the owned
-  /// cells, Voigt components interleaved.
-  void cell_averages(std::vector<double>& strain, std::vector<double>& stress) const;
+  /// Cell averages (over quadrature points) of strain and stress of the owned cells at the
+  /// committed displacement `u` (the internal variables as committed), Voigt components
+  /// interleaved. Computed when asked (for output), not kept: at 1M DOFs stored committed and
+  /// trial averages cost ~120 MB.
+  void cell_averages(const std::vector<double>& u, std::vector<double>& strain,
+                     std::vector<double>& stress) const;
   int voigt_size() const { return nv_; }
   /// Names of the materials' output fields (plastic strain, yield indicator, ...): the union
   /// over every material of the model, in region order, so that all ranks agree.
@@ -102,7 +104,7 @@ private:
   /// Every per-point and per-cell array of the committed state (solid_state.cpp).
   std::vector<StateArrayRef> state_array_refs();
 
-  ElementValues& values_for(CellType type);
+  ElementValues& values_for(CellType type) const;
   template <class CellKernel>
   void loop(const std::vector<double>& u, bool tangent, CellKernel&& kernel,
             const std::function<void(Index, const Voigt&, const Voigt&, bool)>& point_stress = {});
@@ -115,13 +117,12 @@ private:
   const RigidBodyConstraints* rigid_ = nullptr;
   int region_filter_ = -1; ///< loop() skips cells of other regions when ≥ 0
   int nv_;
-  std::map<CellType, std::unique_ptr<ElementValues>> values_;
-  // Per quadrature point only what the physics needs (σ0); strain and stress are kept as
-  // cell averages for output: at 1M DOFs per-point copies cost ~300 MB.
+  /// Shape values per cell type, made when first needed (a cache: const loops use it too).
+  mutable std::map<CellType, std::unique_ptr<ElementValues>> values_;
+  // Per quadrature point only what the physics needs (σ0); strain and stress are averaged
+  // per cell when output asks (cell_averages()): at 1M DOFs per-point copies cost ~300 MB.
   std::vector<Index> qp_offset_; ///< per owned cell, first quadrature point
   std::vector<double> sigma0_;   ///< initial stress per point (nv each); empty = zero
-  std::vector<double> cell_strain_, cell_stress_;             ///< committed averages
-  std::vector<double> trial_cell_strain_, trial_cell_stress_; ///< of the last assembly
   // Internal variables, only for materials that have some (a linear model stores nothing):
   // state_offset_[k] is the first value of owned cell k, its points following each other.
   std::vector<Index> state_offset_;

@@ -10,19 +10,15 @@ namespace bipot {
 
 std::vector<SolidAssembler::StateArrayRef> SolidAssembler::state_array_refs() {
   const std::size_t n = owned_cells_.size();
-  std::vector<Index> per_point(n + 1), per_cell(n + 1);
-  for (std::size_t k = 0; k <= n; ++k) {
+  std::vector<Index> per_point(n + 1);
+  for (std::size_t k = 0; k <= n; ++k)
     per_point[k] = qp_offset_[k] * nv_;
-    per_cell[k] = static_cast<Index>(k) * nv_;
-  }
   // Internal variables: materials without any store none (state_offset_ is then empty).
   std::vector<Index> per_state(n + 1, 0);
   if (!state_offset_.empty()) per_state = state_offset_;
   return {{"point.initial_stress", &sigma0_, per_point},
           {"point.internal_variables", &state_, per_state},
-          {"point.strain_offset", &strain_offset_, per_point},
-          {"cell.strain", &cell_strain_, per_cell},
-          {"cell.stress", &cell_stress_, per_cell}};
+          {"point.strain_offset", &strain_offset_, per_point}};
 }
 
 StateArrays SolidAssembler::save_state() const {
@@ -74,8 +70,6 @@ void SolidAssembler::load_state(const StateArrays& state) {
                 a.values->begin() + a.offsets[k]);
     }
   }
-  trial_cell_strain_ = cell_strain_;
-  trial_cell_stress_ = cell_stress_;
   trial_state_ = state_;
   // A strain offset saved before any reset comes back as zeros: drop it, as if never set.
   if (std::all_of(strain_offset_.begin(), strain_offset_.end(), [](double v) { return v == 0; }))
