@@ -24,13 +24,8 @@ void SchurComplementSolver::factorize(const SparseMatrix& A, const std::vector<I
   std::sort(dofs_.begin(), dofs_.end());
   const std::vector<long long> vars(dofs_.begin(), dofs_.end());
   schur_.resize(0, 0); // the old S is not needed while MUMPS factorises (its peak)
-  impl_->direct.factorize(A.impl_->matrix, vars, symmetric);
-  // Moved out of the direct solver: S is kept once, here.
-  const std::vector<double> s = impl_->direct.take_schur();
+  impl_->direct.factorize(A.impl_->matrix, vars, symmetric, schur_);
   const Index m = static_cast<Index>(dofs_.size());
-  // By rows (ICNTL(19) = 1); a symmetric one mirrored from its lower triangle.
-  schur_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      s.data(), m, m);
   // Relative asymmetry max |S_ij − S_ji| / max |S_ij|, by columns of the lower triangle.
   double worst = 0, largest = 0;
   for (Index j = 0; j < m; ++j)

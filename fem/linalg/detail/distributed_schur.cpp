@@ -38,7 +38,7 @@ struct DistributedSchur::Impl {
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> values;
   std::vector<MUMPS_INT> listvar;
-  std::vector<double> schur, rhs, redrhs;
+  std::vector<double> rhs, redrhs;
   std::vector<int> owned_counts, owned_offsets; ///< rows per rank, for b and x
   bool initialised = false;
   bool symmetric = false;       ///< the instance factorises LDLᵀ (SYM = 2)
@@ -168,7 +168,8 @@ DistributedSchur::~DistributedSchur() {
 }
 
 void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
-                                 const std::vector<long long>& schur_dofs, bool symmetric) {
+                                 const std::vector<long long>& schur_dofs, bool symmetric,
+                                 Eigen::MatrixXd& S) {
   auto& im = *impl_;
   if (im.source.get() != A.get() || im.schur_dofs != schur_dofs || im.symmetric != symmetric) {
     im.source = Teuchos::null; // not reusable if the analysis throws
@@ -180,11 +181,11 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
   } else {
     im.collect(*A);
   }
-  // S is written by the host during the factorisation and handed over by take_schur(); the
-  // solves after it do not read it.
-  const std::size_t m = schur_dofs.size();
-  im.schur.assign(im.rank == 0 ? m * m : 0, 0.0);
-  im.id.schur = im.rank == 0 ? im.schur.data() : nullptr;
+  // S is written by the host during the factorisation, by rows; the solves after it do not
+  // read it. The other ranks receive it afterwards, so their copy is not there at MUMPS' peak.
+  const Eigen::Index m = static_cast<Eigen::Index>(schur_dofs.size());
+  S.resize(im.rank == 0 ? m : 0, im.rank == 0 ? m : 0);
+  im.id.schur = im.rank == 0 ? S.data() : nullptr;
   // Off-diagonal pivoting can need more workspace than the analysis estimated
   // (INFOG(1) = -8, -9): retry with a larger relaxation, as the MUMPS manual advises.
   for (int attempt = 0;; ++attempt) {
@@ -206,15 +207,22 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
     throw SolverError("direct solver (mumps, distributed) factorisation failed: numerically "
                       "singular matrix outside the Schur variables (" +
                       std::to_string(im.id.infog[27]) + " null pivots, MUMPS INFOG(28))");
-  if (im.rank == 0 && im.symmetric) {
-    // MUMPS returns the lower triangle by rows (ICNTL(19) = 1, SYM = 2) and writes the other
-    // triangle too, from workspace it did not initialise: mirror the lower one.
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        im.schur[j * m + i] = im.schur[i * m + j];
+  if (im.rank == 0) {
+    // Column-major S holds MUMPS' rows as columns: Sᵀ.
+    if (im.symmetric) {
+      // MUMPS returns the lower triangle by rows (ICNTL(19) = 1, SYM = 2) and writes the other
+      // triangle too, from workspace it did not initialise: mirror the lower one (the upper
+      // triangle of Sᵀ).
+      for (Eigen::Index j = 0; j < m; ++j)
+        for (Eigen::Index i = j + 1; i < m; ++i)
+          S(i, j) = S(j, i);
+    } else {
+      S.transposeInPlace();
+    }
+  } else {
+    S.resize(m, m);
   }
-  im.schur.resize(m * m);
-  MPI_Bcast(im.schur.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Bcast(S.data(), static_cast<int>(m * m), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
 void DistributedSchur::set_factor_directory(const std::string& directory) {
@@ -222,10 +230,6 @@ void DistributedSchur::set_factor_directory(const std::string& directory) {
   if (directory == im.factor_directory) return;
   im.factor_directory = directory;
   im.source = Teuchos::null; // analysed for the other storage: analyse again
-}
-
-std::vector<double> DistributedSchur::take_schur() {
-  return std::move(impl_->schur);
 }
 
 std::vector<double> DistributedSchur::reduce(const double* b_owned) {

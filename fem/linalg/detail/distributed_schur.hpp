@@ -4,6 +4,8 @@
 
 #include "fem/linalg/detail/tpetra_types.hpp"
 
+#include <Eigen/Dense>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,14 +25,14 @@ public:
   DistributedSchur(const DistributedSchur&) = delete;
   DistributedSchur& operator=(const DistributedSchur&) = delete;
 
-  /// Factorises A with the global rows `schur_dofs` (sorted) as Schur variables I; afterwards
-  /// take_schur() hands over S = A_II − A_IB A_BB⁻¹ A_BI on every rank (row-major; once per
-  /// factorisation: no copy is kept). `symmetric`: A is symmetric and is factorised LDLᵀ
-  /// from its lower triangle (half the factors). The analysis is repeated only for another
-  /// matrix object, another set of Schur variables or another symmetry.
+  /// Factorises A with the global rows `schur_dofs` (sorted) as Schur variables I and writes
+  /// S = A_II − A_IB A_BB⁻¹ A_BI into `S` on every rank (resized; MUMPS writes it there
+  /// directly, so that no second copy of S coexists with MUMPS' workspace). `symmetric`: A is
+  /// symmetric and is factorised LDLᵀ from its lower triangle (half the factors). The
+  /// analysis is repeated only for another matrix object, another set of Schur variables or
+  /// another symmetry.
   void factorize(const Teuchos::RCP<CrsMatrix>& A, const std::vector<long long>& schur_dofs,
-                 bool symmetric = false);
-  std::vector<double> take_schur();
+                 bool symmetric, Eigen::MatrixXd& S);
   /// The factors of the next factorize() are written to files in `directory` (MUMPS
   /// out-of-core, ICNTL(22)) instead of kept in memory; empty: in memory (the default).
   /// A change takes effect with a new analysis.
