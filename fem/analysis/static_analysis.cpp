@@ -256,7 +256,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
       reaction.set_zero();
-      solid.internal_force(u, reaction);
+      if (!reactions_by_product()) solid.internal_force(u, reaction);
       reaction.finish_assembly();
       const std::vector<double> internal = reaction.gather_all();
       reaction.axpy(-1.0, F_step);

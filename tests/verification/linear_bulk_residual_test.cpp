@@ -3,7 +3,8 @@
 // from products with the eliminated K and the removed entries equals
 // SolidAssembler::assemble(u, c, nullptr, R) on every row (free rows −f_int(u + du_c), the
 // constrained ones diag(K) du_c), in 2D, axisymmetric and 3D, at 1 and 2 ranks; and again
-// after the initial stress changed.
+// after the initial stress changed. So does the unconstrained internal force of every row
+// (the reactions), which is refused for supports other than K's.
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/assembly/linear_bulk_residual.hpp"
@@ -125,7 +126,29 @@ TEST_P(LinearBulkResidualTest, EqualsTheCellLoop) {
     // Two summation orders of the same O(scale) terms: round-off, ~1e-15 relative.
     EXPECT_LE(diff, 1e-12 * scale) << "round " << round << ": " << diff << " of " << scale;
     EXPECT_GT(scale, 1.0); // the initial stress and the increments make it non-trivial
+
+    // The unconstrained f_int(u) on every row (the reactions after an increment).
+    DistributedVector f_loop(dist), f_product(dist);
+    f_loop.set_zero();
+    solid.internal_force(u, f_loop);
+    f_loop.finish_assembly();
+    f_product.set_zero();
+    EXPECT_TRUE(product.internal_force(solid, K, u, constraints, f_product));
+    f_product.finish_assembly();
+    const double f_diff = largest_difference(f_product, f_loop, &scale);
+    EXPECT_LE(f_diff, 1e-12 * scale) << "round " << round << ": " << f_diff << " of " << scale;
+    EXPECT_GT(scale, 1.0);
   }
+  // Supports other than those K was assembled with: refused, nothing added.
+  Constraints fewer = constraints;
+  fewer.clear();
+  for (const auto& kv : constraints.values())
+    if (kv.second == 0.0) fewer.set(kv.first, 0.0);
+  DistributedVector untouched(dist);
+  untouched.set_zero();
+  EXPECT_FALSE(product.internal_force(solid, K, u, fewer, untouched));
+  untouched.finish_assembly();
+  EXPECT_EQ(untouched.norm2(), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinematics, LinearBulkResidualTest,

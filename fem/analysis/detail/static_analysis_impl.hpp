@@ -253,6 +253,16 @@ struct StaticAnalysis::Impl {
   // (their last change). Set by the stage driver.
   double extrapolation = 0.0;
   void tied_interface_forces(double gravity_factor);
+  /// generalized_newton on a linear bulk without rigid bodies: adds f_int(u) to `reaction`
+  /// from products with the factorised K (LinearBulkResidual::internal_force) instead of a
+  /// cell loop, if K is that of the stage's supports; false (nothing added) otherwise.
+  bool reactions_by_product() {
+    if (!newton_system || !schur_ready || !linear || !rigid.empty()) return false;
+    Constraints supports;
+    for (const auto& kv : target)
+      supports.set(kv.first, 0.0);
+    return bulk_product.internal_force(solid, *K, u, supports, reaction);
+  }
   // Share of gravity in the loads at the end of the previous stage and of the current one
   // (0 or 1), ramped like the loads.
   double gravity_before = 0.0, gravity_now = 0.0;
