@@ -50,7 +50,7 @@ Usage: bench/frictional_block.py [--bipot build/apps/bipot/bipot] [--repeat 3]
        [--skip-getfem] [--tolerance 1e-10]
 (n = 31, 70, 122, 223: ~2k, 10k, 30k, 100k DOFs). GetFEM needs the Debian python3-getfem
 package; when the running interpreter lacks it, the script re-runs itself with
-/usr/bin/python3.
+/usr/bin/python3. Reading bipot's displacements (LZ4-compressed .vtu) needs python3-lz4.
 """
 import argparse
 import csv
@@ -130,7 +130,8 @@ def grid_key(x, y, n):
 
 def read_vtu(path):
     """Points, point arrays and cell arrays of a VTK XML unstructured grid written in
-    appended raw mode (optionally zlib-compressed), as lists of tuples."""
+    appended raw mode (optionally zlib- or LZ4-compressed: bipot writes LZ4, which needs
+    Debian's python3-lz4), as lists of tuples."""
     with open(path, "rb") as f:
         data = f.read()
     marker = data.index(b"<AppendedData")
@@ -139,7 +140,19 @@ def read_vtu(path):
     root = ET.fromstring(head)
     header = "Q" if root.get("header_type", "UInt32") == "UInt64" else "I"
     hsize = 8 if header == "Q" else 4
-    compressed = root.get("compressor") is not None
+    compressor = root.get("compressor")
+    compressed = compressor is not None
+    if compressed and "LZ4" in compressor:
+        try:
+            import lz4.block
+        except ImportError:
+            sys.exit(f"{path} is LZ4-compressed: apt-get install python3-lz4")
+
+        def inflate(chunk, size):
+            return lz4.block.decompress(chunk, uncompressed_size=size)
+    else:
+        def inflate(chunk, size):
+            return zlib.decompress(chunk)
     import struct
     types = {"Float64": "d", "Float32": "f", "Int64": "q", "Int32": "i", "UInt8": "B",
              "Int8": "b", "UInt64": "Q", "UInt32": "I"}
@@ -151,8 +164,8 @@ def read_vtu(path):
             sizes = struct.unpack_from("<%d%s" % (nb, header), data, off + 3 * hsize)
             pos = off + (3 + nb) * hsize
             raw = b""
-            for s in sizes:
-                raw += zlib.decompress(data[pos:pos + s])
+            for k, s in enumerate(sizes):
+                raw += inflate(data[pos:pos + s], last if k == nb - 1 and last else bs)
                 pos += s
         else:
             (nbytes,) = struct.unpack_from("<" + header, data, off)

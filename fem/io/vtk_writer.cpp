@@ -206,6 +206,9 @@ void VtkSeriesWriter::write_step(double time, const Mesh& mesh, const std::vecto
   writer->SetDataModeToAppended();
   writer->EncodeAppendedDataOff(); // raw binary: smaller and faster than base64
   writer->SetHeaderTypeToUInt64(); // no 4 GiB limit per array
+  // LZ4: at 300k DOFs a step took 0.8 s with the default zlib, 0.1 s with LZ4, for files a
+  // third larger (ParaView reads them since 5.5).
+  writer->SetCompressorTypeToLZ4();
   if (writer->Write() != 1) throw Error("VtkSeriesWriter: cannot write '" + file + "'");
 
   times_.push_back(time);
