@@ -170,6 +170,14 @@ double InterfaceNewtonSystem::multiplier_residual(const Eigen::VectorXd& F) cons
   return worst;
 }
 
+std::vector<ContactStatus> InterfaceNewtonSystem::branches() const {
+  std::vector<ContactStatus> out;
+  out.reserve(pairs_.size());
+  for (const PairSlots& s : pairs_)
+    out.push_back(s.iface->results()[s.pair].status);
+  return out;
+}
+
 double InterfaceNewtonSystem::released_adhesion_energy(Eigen::VectorXd* grad) const {
   double released = 0;
   for (InterfaceAssembler* ia : interfaces_) {

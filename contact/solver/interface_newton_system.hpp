@@ -84,6 +84,7 @@ public:
 
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   double multiplier_residual(const Eigen::VectorXd& F) const override;
+  std::vector<ContactStatus> branches() const override;
 
   /// Σ_i A_i [E(β_i,committed) − E(β_i)], E = the law's adhesion_energy: the energy that
   /// adhesion loss has released since the last converged increment, at the interfaces' last

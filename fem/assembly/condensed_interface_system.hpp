@@ -8,6 +8,7 @@
 /// module implements it (contact/solver/interface_newton_system.hpp: Alart–Curnier form of the
 /// bipotential fixed point).
 
+#include "fem/core/interface_point.hpp"
 #include "fem/core/types.hpp"
 
 #include <Eigen/Dense>
@@ -45,6 +46,10 @@ public:
                    std::vector<Eigen::Triplet<double>>& J) const = 0;
   /// max_i ‖F_λi‖ (kN) of an F filled by add(): how far the multipliers are from the law.
   virtual double multiplier_residual(const Eigen::VectorXd& F) const = 0;
+  /// Each pair's branch of the law (stick, slip, open) at the interfaces' last evaluate(), in
+  /// the order of the multipliers: pair k's law rows in F are num_dofs() + d k, ..., + d − 1,
+  /// d = num_multipliers() / (number of pairs).
+  virtual std::vector<ContactStatus> branches() const = 0;
   /// The energy adhesion loss has released since the last converged increment, at the last
   /// evaluate() (kJ); with grad, adds its derivatives with respect to x (the row a
   /// dissipation-controlled step borders J with).

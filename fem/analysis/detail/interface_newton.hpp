@@ -23,7 +23,8 @@ namespace bipot {
 /// change per unit load factor, f_c and F_λ the interfaces' forces and law
 /// (CondensedInterfaceSystem), g the path constraint (PathStep). J = [−S 0; 0 0] + the sparse
 /// interface (and border) terms, solved inexactly by GMRES on earlier factors
-/// (ReusedLuSolver), each step backtracked on ‖F‖.
+/// (ReusedLuSolver), each step backtracked on ‖F‖ unless its only excess is the overshoot
+/// of pairs going from stick to slip (see solve()).
 class InterfaceNewton {
 public:
   /// The condensed system of the bulk state `context.u`; S, c and c1 must outlive this.
@@ -46,6 +47,10 @@ private:
   void residual(const Eigen::VectorXd& at, Eigen::VectorXd& out, CondensedNewtonMatrix* jac);
   /// The line search's merit: each residual in units of its own tolerance.
   double merit(const Eigen::VectorXd& r) const;
+  /// merit(r) without the law rows of the pairs stuck in `before` and sliding in `after`.
+  double merit_without_stick_to_slip(const Eigen::VectorXd& r,
+                                     const std::vector<ContactStatus>& before,
+                                     const std::vector<ContactStatus>& after) const;
 
   IncrementContext& ctx_;
   const CondensedInterfaceSystem& sys_;
