@@ -145,15 +145,19 @@ bool InterfaceNewton::solve(Eigen::VectorXd& z, const ConvergenceTest& test, int
       // piles' linear solves are unchanged (docs/performance_solver_engine.md).
       residual(z + dz, F_try, nullptr);
       const double armijo = (1.0 - 1e-4) * merit0; // backtracking_step's test at the full step
-      const bool decrease = merit(F_try) < armijo;
+      const double merit_full = merit(F_try);
+      const bool decrease = merit_full < armijo;
       const bool overshoot_only =
           !decrease && !overshoot_taken &&
           merit_without_stick_to_slip(F_try, branches, sys_.branches()) < armijo;
       if (!decrease && !overshoot_only)
-        step = backtracking_step(merit0, [&](double s) {
-          residual(z + s * dz, F_try, nullptr);
-          return merit(F_try);
-        });
+        step = backtracking_step(
+            merit0,
+            [&](double s) {
+              residual(z + s * dz, F_try, nullptr);
+              return merit(F_try);
+            },
+            merit_full);
       overshoot_taken = overshoot_only;
       summary.assembly_seconds += seconds_since(t0);
     }
