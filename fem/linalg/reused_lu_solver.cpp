@@ -139,6 +139,7 @@ template <class Matrix> void ReusedLuSolver::factorize(const Matrix& J, bool sin
   }
   factor_rows_ = J.rows();
   factorized_ = true;
+  iterations_on_factors_ = 0;
   ++factorizations_;
   last_iterations_ = 0; // a solve's count: the iterations on the factors it ends with
 }
@@ -171,7 +172,16 @@ Eigen::VectorXd ReusedLuSolver::solve_any(const Matrix& J, const Eigen::VectorXd
   last_iterations_ = 0;
   if (b.norm() == 0.0) return Eigen::VectorXd::Zero(b.size());
   Eigen::VectorXd x;
-  if (factorized_ && factor_rows_ == J.rows() && refine(J, b, accept, x)) return x;
+  // Large factors that have cost refactor_after × n GMRES iterations are renewed even though
+  // GMRES still converges on them: iterations grow as the matrix drifts from them (a
+  // debonding front moving through the pairs).
+  if (factorized_ && J.rows() >= renew_from_rows &&
+      iterations_on_factors_ > refactor_after * static_cast<double>(J.rows()))
+    factorized_ = false;
+  if (factorized_ && factor_rows_ == J.rows() && refine(J, b, accept, x)) {
+    iterations_on_factors_ += last_iterations_;
+    return x;
+  }
   // No factors, or too far off: factorise J. Double-precision factors solve directly;
   // single-precision ones through GMRES, and if even that fails J is factorised in double.
   if (single_) {

@@ -20,7 +20,8 @@ namespace bipot {
 /// checked and, if above `accept` relative to ‖b‖, GMRES solves for it again (iterative
 /// refinement, up to three passes). J is factorised afresh when there are no factors yet or
 /// when that fails (GMRES not converged in `max_iterations`, or the residual not shrinking:
-/// the factors are too far off); the factors are then kept for the next solves.
+/// the factors are too far off) or when the solves on them have taken refactor_after × n
+/// iterations; the factors are then kept for the next solves.
 ///
 /// With several MPI ranks and J in operator form (CondensedNewtonMatrix, whose products are
 /// shared by the ranks) the preconditioner's substitutions are shared too
@@ -57,6 +58,16 @@ public:
   Eigen::VectorXd solve(const CondensedNewtonMatrix& J, const Eigen::VectorXd& b, double accept);
   /// GMRES iterations within which a solve meets the tight acceptance whatever `accept`.
   static constexpr int cheap_iterations = 10;
+  /// The factors are renewed once the solves on them have taken more than this times n GMRES
+  /// iterations (n the matrix size). A factorisation costs O(n³), an iteration O(n²) (the
+  /// substitutions and one product), so the budget grows with n. On the pile study at n =
+  /// 2400 and 4700 (k = 8, 14), 0.25 to 0.5 took 13 to 20 % off the run (fewer iterations on
+  /// fresher factors); 1 and more approach never renewing them (docs/performance_solver_engine.md).
+  /// Only from renew_from_rows on: below, a factorisation costs milliseconds and renewing
+  /// saves nothing, while it moves round-off and with it Newton's path on the small shipped
+  /// inputs (the Coulomb pile, n ≈ 300: 85 linear solves became 108).
+  static constexpr double refactor_after = 0.5;
+  static constexpr Eigen::Index renew_from_rows = 1000;
   /// Drop the factors and free their memory (the matrices to come are unrelated to the last
   /// one).
   void reset();
@@ -78,6 +89,7 @@ private:
 
   double tolerance_, accept_;
   int max_iterations_;
+  int iterations_on_factors_ = 0; ///< GMRES iterations of the solves on the current factors
   bool single_ = false;
   // The factors overwrite the matrix they come from (in-place LU): one n × n array, not two.
   // One of the two precisions is in use.

@@ -287,5 +287,46 @@ TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
   EXPECT_LE((x - exact).norm(), 1e-3 * exact.norm());
 }
 
+// A matrix drifting from its factors (6 more rows changed before each solve, as pairs change
+// branch along a debonding front): from renew_from_rows on, the factors are renewed once the
+// solves on them have taken more than refactor_after × n GMRES iterations, although GMRES
+// still converges on them; below, they are kept. Every solution meets the acceptance.
+TEST(ReusedLuSolver, RenewsLargeFactorsAfterTheirIterationBudget) {
+  for (const int n : {static_cast<int>(ReusedLuSolver::renew_from_rows),
+                      static_cast<int>(ReusedLuSolver::renew_from_rows) - 1}) {
+    ReusedLuSolver solver;
+    Eigen::MatrixXd J = test_matrix(n, 3);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, -2.0);
+    solver.solve(J, b);
+    int spent = 0, renewals = 0;
+    for (int j = 0; j < 15; ++j) {
+      for (int i = 0; i < 6; ++i) {               // a new row, as large as the diagonal everywhere
+        const int r = (7 * (6 * j + i) + 11) % n; // 7: coprime with both n
+        J.row(r) = n * Eigen::RowVectorXd::Random(n);
+        J(r, r) += 2.0 * n;
+      }
+      const int before = solver.factorizations();
+      const Eigen::VectorXd x = solver.solve(J, b);
+      EXPECT_LT(relative_residual(J, x, b), 1e-11) << "n " << n << ", solve " << j;
+      if (solver.factorizations() > before) {
+        ++renewals;
+        // Renewed only past the budget, not because GMRES failed on the old factors.
+        EXPECT_GT(spent, ReusedLuSolver::refactor_after * n) << "n " << n << ", solve " << j;
+        spent = solver.last_iterations();
+      } else {
+        spent += solver.last_iterations();
+      }
+    }
+    std::printf("n = %d: %d renewal(s), %d GMRES iterations on the last factors\n", n, renewals,
+                spent);
+    if (n >= ReusedLuSolver::renew_from_rows) {
+      EXPECT_EQ(renewals, 1);
+    } else { // kept, although they took more than the budget
+      EXPECT_EQ(renewals, 0);
+      EXPECT_GT(spent, ReusedLuSolver::refactor_after * n);
+    }
+  }
+}
+
 } // namespace
 } // namespace bipot
