@@ -50,7 +50,9 @@ public:
   }
   /// Same, taking a GMRES solution whose true relative residual is at most `accept` (at
   /// least the constructor's: the forcing term of an inexact Newton step) once GMRES has
-  /// needed more than cheap_iterations; a cheaper solve still meets the tight acceptance.
+  /// needed more than cheap_iterations; a cheaper solve still meets the tight acceptance,
+  /// unless iterative refinement stalls above it (a pass gaining less than 10x: J's
+  /// conditioning floor, which no factors would beat), when `accept` is enough again.
   Eigen::VectorXd solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, double accept);
   /// The same for J in operator form: GMRES applies −S x + P x (S streamed once per product
   /// instead of the whole dense J), and J is formed densely only when it is factorised. The

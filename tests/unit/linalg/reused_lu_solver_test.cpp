@@ -287,6 +287,38 @@ TEST(ReusedLuSolver, SingleFactorsMeetTheSameTolerances) {
   EXPECT_LE((x - exact).norm(), 1e-3 * exact.norm());
 }
 
+// Fresh float factors of a matrix whose conditioning floor (κ = 1e6, b along the smallest
+// singular direction: ‖J‖‖x‖/‖b‖ = κ) lies above the tight acceptance 1e-11: refinement
+// stalls near 1e-10, which double factors would not beat either. With a loose forcing term
+// the stalled solution is taken; before, the float factors were thrown away for double ones
+// (twice their memory: the 1M-DOF pile's peak).
+TEST(ReusedLuSolver, StalledRefinementMeetsTheForcingTermOnFloatFactors) {
+  const int n = 150;
+  std::srand(21);
+  const Eigen::MatrixXd U =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(n, n)).householderQ();
+  const Eigen::MatrixXd V =
+      Eigen::HouseholderQR<Eigen::MatrixXd>(Eigen::MatrixXd::Random(n, n)).householderQ();
+  Eigen::VectorXd sigma(n);
+  for (int i = 0; i < n; ++i)
+    sigma(i) = std::pow(10.0, -6.0 * i / (n - 1));
+  const Eigen::MatrixXd J = U * sigma.asDiagonal() * V.transpose();
+  const Eigen::VectorXd b = U.col(n - 1) + 1e-3 * U.col(0);
+  const Eigen::VectorXd exact = V * (U.transpose() * b).cwiseQuotient(sigma);
+  ReusedLuSolver single;
+  single.set_single_precision_factors(true);
+  const double accept = 1e-6;
+  const Eigen::VectorXd x = single.solve(J, b, accept);
+  std::printf("floor above 1e-11: %d factorisation(s), %d GMRES iterations, residual %.1e, "
+              "|x - exact| / |exact| = %.1e\n",
+              single.factorizations(), single.last_iterations(), relative_residual(J, x, b),
+              (x - exact).norm() / exact.norm());
+  EXPECT_EQ(single.factorizations(), 1);
+  EXPECT_LE(relative_residual(J, x, b), accept);
+  EXPECT_GT(relative_residual(J, x, b), 1e-11); // the case: the tight acceptance is out of reach
+  EXPECT_LE((x - exact).norm(), 1e-8 * exact.norm());
+}
+
 // A matrix drifting from its factors (6 more rows changed before each solve, as pairs change
 // branch along a debonding front): from renew_from_rows on, the factors are renewed once the
 // solves on them have taken more than refactor_after × n GMRES iterations, although GMRES
