@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace bipot {
@@ -43,7 +44,8 @@ struct ExactNewtonIncrement::Increment {
         iteration_limit(request.max_iterations > 0 ? request.max_iterations
                                                    : ctx.contact_solver.max_iterations),
         prescribed(ctx.prescribed()), constrained_I(sys.num_dofs()),
-        test(ctx.contact_solver.tolerance), R1(ctx.dist) {
+        test(ctx.contact_solver.tolerance),
+        R1(request.path ? std::make_unique<DistributedVector>(ctx.dist) : nullptr) {
     for (const auto& kv : ctx.target)
       constrained_dofs.push_back(kv.first);
     for (Index k = 0; k < sys.num_dofs(); ++k)
@@ -57,7 +59,9 @@ struct ExactNewtonIncrement::Increment {
   std::vector<bool> constrained_I; ///< over I
   ConvergenceTest test;
   Constraints constraints; ///< the prescribed increments of the current outer iteration
-  DistributedVector R1;    ///< a path's residual change per unit load factor
+  /// A path's residual change per unit load factor (only with a path: a whole-mesh vector,
+  /// 7.5 MB at 1M DOFs, alive while the bulk is factorised).
+  std::unique_ptr<DistributedVector> R1;
 };
 
 void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, bool refactor) {
@@ -100,8 +104,8 @@ void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, boo
     ctx_.solid.assemble(u, ahead, nullptr, R);
   R.finish_assembly();
   ctx_.add_step_loads(ahead);
-  inc.R1.copy(R);
-  inc.R1.axpy(-1.0, R_lambda);
+  inc.R1->copy(R);
+  inc.R1->axpy(-1.0, R_lambda);
   R.copy(R_lambda);
   F_step.copy(F_lambda);
 }
@@ -145,7 +149,7 @@ std::vector<double> ExactNewtonIncrement::expand(Increment& inc, const Eigen::Ve
     // expand() back-substitutes.
     inc.path->dlambda = z(n);
     inc.path->x = z.head(nI);
-    ctx_.R.axpy(z(n), inc.R1);
+    ctx_.R.axpy(z(n), *inc.R1);
     ctx_.F_step.axpy(z(n), ctx_.F_cur);
     ctx_.F_step.axpy(-z(n), ctx_.F_prev);
     schur_.reduce(ctx_.R);
@@ -216,7 +220,7 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
     }
     if (refactor && !condense(inc, log)) return false;
     t0 = std::chrono::steady_clock::now();
-    const Eigen::VectorXd c1 = path ? schur_.reduce(inc.R1) : Eigen::VectorXd();
+    const Eigen::VectorXd c1 = path ? schur_.reduce(*inc.R1) : Eigen::VectorXd();
     const Eigen::VectorXd c = schur_.reduce(ctx_.R);
     ctx_.summary.solve_seconds += seconds_since(t0);
 

@@ -181,7 +181,7 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
   analysis.cell_results(cells, strain, stress);
   const int dim = spatial_dim(model_.kinematics);
   const int nv = voigt_size(dim);
-  Field displacement{"displacement", dim, analysis.displacement()};
+  Field displacement{"displacement", dim, {}, &analysis.displacement()};
   // Moved in, not listed in braces: an initializer list copies every array.
   std::vector<Field> cell_fields;
   cell_fields.push_back(Field{"strain", nv, std::move(strain)});

@@ -374,6 +374,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.failed_seconds = failed_seconds;
       summary.failed_seconds += failed_seconds;
       t0 = std::chrono::steady_clock::now();
+      if (rep.stage_end) increment->release_workspace(); // before the output's arrays
       if (writer) writer->write_step(rep, *this_analysis);
       summary.output_seconds += seconds_since(t0);
       if (on_step) on_step(rep);

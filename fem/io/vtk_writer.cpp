@@ -87,14 +87,14 @@ void check_fields(const std::vector<Field>& fields, std::size_t entities, const 
     if (!names.insert(f.name).second) throw Error(what + " is given twice");
     if (f.components < 1)
       throw Error(what + " has " + std::to_string(f.components) + " components");
-    if (f.values.size() != entities * std::size_t(f.components))
-      throw Error(what + " has " + std::to_string(f.values.size()) + " values, expected " +
+    if (f.data().size() != entities * std::size_t(f.components))
+      throw Error(what + " has " + std::to_string(f.data().size()) + " values, expected " +
                   std::to_string(f.components) + " x " + std::to_string(entities) + " " + kind +
                   "s");
   }
 }
 
-/// Copies the values of the listed entities (ids into f.values) into a VTK array, padding
+/// Copies the values of the listed entities (ids into f.data()) into a VTK array, padding
 /// 2D vectors to 3 components.
 // The tuples `ids` of f (all of them, in order, if null), with 3 components for a 2D vector.
 vtkNew<vtkDoubleArray> to_vtk(const Field& f, const std::vector<Index>* ids, int dim) {
@@ -105,15 +105,17 @@ vtkNew<vtkDoubleArray> to_vtk(const Field& f, const std::vector<Index>* ids, int
   if (!ids && nc == f.components) {
     // The field's own array, as written: VTK reads it in place (save = 1: VTK neither frees
     // nor writes it) instead of a copy, 10s of MB at 1M DOFs at the peak, when a stage ends.
-    a->SetArray(const_cast<double*>(f.values.data()), static_cast<vtkIdType>(f.values.size()), 1);
+    const std::vector<double>& values = f.data();
+    a->SetArray(const_cast<double*>(values.data()), static_cast<vtkIdType>(values.size()), 1);
     return a;
   }
-  const std::size_t n = ids ? ids->size() : f.values.size() / f.components;
+  const std::vector<double>& values = f.data();
+  const std::size_t n = ids ? ids->size() : values.size() / f.components;
   a->SetNumberOfTuples(static_cast<vtkIdType>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t at = static_cast<std::size_t>(ids ? (*ids)[i] : Index(i)) * f.components;
     for (int c = 0; c < nc; ++c)
-      a->SetTypedComponent(vtkIdType(i), c, c < f.components ? f.values[at + c] : 0.0);
+      a->SetTypedComponent(vtkIdType(i), c, c < f.components ? values[at + c] : 0.0);
   }
   return a;
 }

@@ -16,6 +16,10 @@ struct Field {
   std::string name;
   int components = 1;
   std::vector<double> values;
+  /// If set, the values are read from there instead of `values`, which stays empty: a field
+  /// the caller keeps anyway (the displacement) is written without a copy.
+  const std::vector<double>* view = nullptr;
+  const std::vector<double>& data() const { return view ? *view : values; }
 };
 
 /// Writes a series of unstructured-grid steps.

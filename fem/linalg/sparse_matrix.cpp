@@ -35,10 +35,21 @@ SparseMatrix::Impl::Impl(const DofDistribution& d, const SparsityPattern& patter
   const Index n_owned = dist.num_owned_dofs();
   row_map = Teuchos::rcp(new detail::Map(static_cast<Tpetra::global_size_t>(dist.num_global_dofs()),
                                          static_cast<std::size_t>(n_owned), GO(0), comm));
-  const std::vector<GO> col_gids(layout.column_gids().begin(), layout.column_gids().end());
-  col_map = Teuchos::rcp(
-      new detail::Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                      Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), GO(0), comm));
+  const auto& remote = layout.remote_columns();
+  if (remote.empty() && comm->getSize() == 1) {
+    // The columns are the rows: the contiguous row map, which Tpetra stores without a list of
+    // its indices (one whole-mesh array less per matrix). Only on one rank: the column map is
+    // local, but Tpetra's constructor of a map from an index list is collective.
+    col_map = row_map;
+  } else {
+    std::vector<GO> col_gids(static_cast<std::size_t>(n_owned));
+    for (Index i = 0; i < n_owned; ++i)
+      col_gids[i] = static_cast<GO>(dist.first_owned_dof() + i);
+    col_gids.insert(col_gids.end(), remote.begin(), remote.end());
+    col_map = Teuchos::rcp(new detail::Map(
+        Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+        Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), GO(0), comm));
+  }
 
   // Exact row sizes and local column indices: no global-index stage, no reallocation.
   const auto& sizes = layout.owned_row_sizes();

@@ -46,6 +46,10 @@ public:
   /// Solves the increment. Leaves `u` (and the interfaces) at the last iterate; on failure
   /// (false, the reason in log.failure) the caller restores u.
   virtual bool solve(const IncrementRequest& request, IncrementLog& log) = 0;
+  /// Frees what the next increment can rebuild (dense factors kept across increments): the
+  /// stage driver calls it at a stage's end, before the output, whose arrays would otherwise
+  /// add to those factors at the run's peak.
+  virtual void release_workspace() {}
 };
 
 /// The increment solver of the contact solver option on `context`'s system: the exact

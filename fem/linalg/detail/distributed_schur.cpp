@@ -146,7 +146,7 @@ struct DistributedSchur::Impl {
     for (std::size_t i = 0; i < m; ++i)
       listvar[i] = static_cast<MUMPS_INT>(schur_dofs[i] + 1);
     redrhs.assign(m, 0.0);
-    rhs.assign(rank == 0 ? n : 0, 0.0);
+    rhs.clear(); // sized by reduce(): not held while MUMPS factorises
     // ICNTL(19) = 1: the Schur complement centralised on the host (rank 0), by rows (its
     // lower triangle for a symmetric matrix); the list of its variables is read on the host.
     id.size_schur = static_cast<MUMPS_INT>(m);
@@ -181,6 +181,9 @@ void DistributedSchur::factorize(const Teuchos::RCP<CrsMatrix>& A,
   } else {
     im.collect(*A);
   }
+  // The whole-mesh right-hand side of reduce()/expand() (n doubles on the host) is not needed
+  // while MUMPS factorises, the run's peak out of core.
+  std::vector<double>().swap(im.rhs);
   // S is written by the host during the factorisation, by rows; the solves after it do not
   // read it. The other ranks receive it afterwards, so their copy is not there at MUMPS' peak.
   const Eigen::Index m = static_cast<Eigen::Index>(schur_dofs.size());
@@ -234,6 +237,7 @@ void DistributedSchur::set_factor_directory(const std::string& directory) {
 
 std::vector<double> DistributedSchur::reduce(const double* b_owned) {
   auto& im = *impl_;
+  if (im.rank == 0) im.rhs.resize(static_cast<std::size_t>(im.id.n));
   MPI_Gatherv(b_owned, im.owned_counts[im.rank], MPI_DOUBLE, im.rhs.data(), im.owned_counts.data(),
               im.owned_offsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   im.id.rhs = im.rank == 0 ? im.rhs.data() : nullptr; // centralised on the host (ICNTL(20) = 0)

@@ -175,10 +175,7 @@ MatrixLayout::MatrixLayout(const DofDistribution& dist, const SparsityPattern& p
       if (!owned(c)) remote.push_back(c);
   }
   sort_unique(remote);
-  column_gids_.resize(static_cast<std::size_t>(n_owned));
-  for (Index i = 0; i < n_owned; ++i)
-    column_gids_[i] = first + i;
-  column_gids_.insert(column_gids_.end(), remote.begin(), remote.end());
+  remote_columns_ = std::move(remote);
 
   recv_local_rows_.reserve(received_cols_.size());
   recv_local_cols_.reserve(received_cols_.size());
@@ -199,10 +196,9 @@ int MatrixLayout::local_column(Index gid) const {
   const Index first = dist_.first_owned_dof();
   const Index n_owned = dist_.num_owned_dofs();
   if (gid >= first && gid < first + n_owned) return static_cast<int>(gid - first);
-  const auto begin = column_gids_.begin() + n_owned;
-  const auto it = std::lower_bound(begin, column_gids_.end(), gid);
-  if (it == column_gids_.end() || *it != gid) return -1;
-  return static_cast<int>(it - column_gids_.begin());
+  const auto it = std::lower_bound(remote_columns_.begin(), remote_columns_.end(), gid);
+  if (it == remote_columns_.end() || *it != gid) return -1;
+  return static_cast<int>(n_owned + (it - remote_columns_.begin()));
 }
 
 void MatrixLayout::gather_row(Index local_row, std::vector<Index>& out) const {
@@ -251,6 +247,7 @@ void MatrixLayout::visit_owned_rows(
   for (auto* v : {&cell_ptr_, &cell_list_, &coupling_ptr_, &coupling_list_, &received_ptr_,
                   &received_list_, &received_offsets_, &received_cols_})
     std::vector<Index>().swap(*v);
+  std::vector<std::size_t>().swap(row_sizes_); // the graph is built: a whole-mesh array less
 }
 
 } // namespace bipot::detail

@@ -34,12 +34,14 @@ public:
   /// Position of ghost row `row` in ghost_rows(), or -1.
   Index ghost_index(Index row) const;
 
-  /// Global index of every local column: owned DOFs, then remote ones ascending.
-  const std::vector<Index>& column_gids() const { return column_gids_; }
+  /// The local columns are the owned DOFs, in order, then these remote ones, ascending. Only
+  /// the remote ones are stored: a list of every column is a whole-mesh array (7.5 MB at 1M
+  /// DOFs) per matrix.
+  const std::vector<Index>& remote_columns() const { return remote_columns_; }
   /// Local column index of a global column, or -1 if no owned row uses it.
   int local_column(Index gid) const;
 
-  /// Number of entries in each owned row, and in all of them.
+  /// Number of entries in each owned row (until visit_owned_rows()), and in all of them.
   const std::vector<std::size_t>& owned_row_sizes() const { return row_sizes_; }
   std::size_t num_owned_entries() const { return owned_entries_; }
   /// Calls visit(local_row, local_cols) for each owned row in order, local_cols being the
@@ -59,7 +61,7 @@ private:
 
   DofDistribution dist_;
   std::vector<Index> ghost_rows_, ghost_offsets_, ghost_cols_;
-  std::vector<Index> column_gids_;
+  std::vector<Index> remote_columns_;
   std::size_t owned_entries_ = 0;
   std::vector<std::size_t> row_sizes_;
   std::vector<int> send_counts_, recv_counts_;
