@@ -168,10 +168,11 @@ private:
   struct AccountedPair {
     LocalVector jump, traction, r;
     double beta = 0;
-    /// The state before (jump and adhesive traction), and β one step before that: the
-    /// three-point rule's stencil and its kink test (spring_work_correction.hpp).
+    /// The state before (jump and adhesive traction): the three-point rule's stencil; the
+    /// last step's regime and for how many steps it has held: its kink test
+    /// (spring_work_correction.hpp).
     LocalVector prev_jump, prev_adhesive;
-    double prev_beta = 0, beta_before_prev = 0;
+    int regime = -1, regime_steps = 0;
   };
   /// After set_law(): the energy account's start of the next step under the new law
   /// (interface_energy.cpp).

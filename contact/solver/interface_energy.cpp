@@ -22,9 +22,11 @@ void InterfaceAssembler::start_energy_account() {
     p.jump = p.traction = p.r = LocalVector::Zero(dim_);
     // The unloaded jump: the pair's gap (no force acts on it yet).
     p.jump(0) = iface_.initial_gap + iface_.pairs[i].gap + gap_shift_;
-    p.beta = p.prev_beta = p.beta_before_prev = committed_[i].beta;
+    p.beta = committed_[i].beta;
     p.prev_jump = p.jump;
     p.prev_adhesive = LocalVector::Zero(dim_);
+    p.regime = -1;
+    p.regime_steps = 0;
   }
   smooth_states_ = 1;
   accounted_shift_ = gap_shift_;
@@ -97,6 +99,9 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
     if (iface_.obstacle)
       energy.interference_work -=
           0.5 * A * (old.traction + now.traction).dot(frame(i).transpose() * d_obstacle);
+    const int regime = spring_regime(old.beta, now.beta, static_cast<int>(now.status));
+    old.regime_steps = regime == old.regime ? std::min(old.regime_steps + 1, 1 << 20) : 1;
+    old.regime = regime;
     if (three_point) {
       SpringHistory h;
       h.a[0] = old.prev_adhesive;
@@ -105,15 +110,11 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
       h.g[0] = old.prev_jump;
       h.g[1] = old.jump;
       h.g[2] = now.jump;
-      h.beta[0] = old.beta_before_prev;
-      h.beta[1] = old.prev_beta;
-      h.beta[2] = old.beta;
-      h.beta[3] = now.beta;
+      h.softening = now.beta < old.beta;
+      h.regime_steps = old.regime_steps;
       energy.kinked = energy.kinked || spring_path(h) == SpringPath::Kinked;
       energy.external_work_correction += A * spring_work_correction(energy.rule, h);
     }
-    old.beta_before_prev = old.prev_beta;
-    old.prev_beta = old.beta;
     old.prev_jump = old.jump;
     old.prev_adhesive = a_old;
     old.jump = now.jump;
@@ -135,8 +136,8 @@ std::vector<double> InterfaceAssembler::save_energy_account() const {
     v.push_back(p.beta);
     for (const auto* x : {&p.jump, &p.traction, &p.r})
       v.insert(v.end(), x->data(), x->data() + x->size());
-    v.push_back(p.prev_beta);
-    v.push_back(p.beta_before_prev);
+    v.push_back(p.regime);
+    v.push_back(p.regime_steps);
     for (const auto* x : {&p.prev_jump, &p.prev_adhesive})
       v.insert(v.end(), x->data(), x->data() + x->size());
   }
@@ -170,8 +171,8 @@ void InterfaceAssembler::load_energy_account(const std::vector<double>& v) {
     for (auto* x : {&p.jump, &p.traction, &p.r})
       read(*x);
     if (!stencil) continue;
-    p.prev_beta = v[at++];
-    p.beta_before_prev = v[at++];
+    p.regime = static_cast<int>(v[at++]);
+    p.regime_steps = static_cast<int>(v[at++]);
     read(p.prev_jump);
     read(p.prev_adhesive);
   }

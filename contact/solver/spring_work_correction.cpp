@@ -2,10 +2,16 @@
 
 namespace bipot::contact {
 
+int spring_regime(double beta_old, double beta_new, int status) {
+  // β reaching 0 ends the springs within the step: a regime of its own, so that the steps
+  // around it are kinked.
+  const int beta_code = beta_new < beta_old ? (beta_new > 0 ? 1 : 2) : 0;
+  return 3 * status + beta_code;
+}
+
 SpringPath spring_path(const SpringHistory& h) {
-  const bool f1 = h.beta[0] > h.beta[1], f2 = h.beta[1] > h.beta[2], f3 = h.beta[2] > h.beta[3];
-  if (!f1 && !f2 && !f3) return SpringPath::Steady;
-  return f1 && f2 && f3 && h.beta[3] > 0 ? SpringPath::Softening : SpringPath::Kinked;
+  if (h.regime_steps < regime_steps_needed) return SpringPath::Kinked;
+  return h.softening ? SpringPath::Softening : SpringPath::Steady;
 }
 
 double spring_work_correction(const ThreePointRule& rule, const SpringHistory& h) {

@@ -87,7 +87,7 @@ INSTANTIATE_TEST_SUITE_P(BothControls, TracedSnapBack,
 // while β falls, the ledger's three-point rule on the softening springs' share of the external
 // work (docs/energy_quadrature.md) leaves an error of third order in the step over the run
 // (the quadrature's, not a solver error): 12 → 48 increments divides it by 64 nominally
-// (measured 1.3e-2 → 8.3e-5 of the external work at the end, 160 times; the trapezoid alone,
+// (measured 1.3e-2 → 8.2e-5 of the external work at the end, 162 times; the trapezoid alone,
 // second order, gave 1.9e-2 → 7.2e-4, 26 times, and fails both checks below).
 TEST(TracedEnergy, BalanceIsExactWhileElasticAndThirdOrderWhileDebonding) {
   auto final_error = [](int increments) {

@@ -5,6 +5,8 @@
 // three-point rule; where β starts falling within the stencil it is the trapezoid.
 #include "contact/solver/spring_work_correction.hpp"
 
+#include "fem/core/interface_point.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,8 +22,9 @@ double beta_of(double g) {
   return std::min(1.0, w / (C * g * g));
 }
 
-// Normal opening g and a slip 0.5 g: Ẽ = C (g² + g²/4), β = min(1, w/Ẽ).
-SpringHistory history(double g_before, const double g[3]) {
+// Normal opening g and a slip 0.5 g: Ẽ = C (g² + g²/4), β = min(1, w/Ẽ). `steps`: how long the
+// pair's regime has held (spring_regime of the last step).
+SpringHistory history(const double g[3], int steps) {
   SpringHistory h;
   const auto jump = [](double gn) {
     Eigen::VectorXd j(2);
@@ -29,12 +32,12 @@ SpringHistory history(double g_before, const double g[3]) {
     return j;
   };
   const auto beta = [&](double gn) { return beta_of(std::sqrt(1.25) * gn); };
-  h.beta[0] = beta(g_before);
   for (int i = 0; i < 3; ++i) {
     h.g[i] = jump(g[i]);
-    h.beta[i + 1] = beta(g[i]);
-    h.a[i] = -h.beta[i + 1] * h.beta[i + 1] * C * h.g[i];
+    h.a[i] = -beta(g[i]) * beta(g[i]) * C * h.g[i];
   }
+  h.softening = beta(g[2]) < beta(g[1]);
+  h.regime_steps = steps;
   return h;
 }
 
@@ -48,18 +51,25 @@ double trapezoid(const SpringHistory& h) {
   return -0.5 * (h.a[1] + h.a[2]).dot(h.g[2] - h.g[1]);
 }
 
-TEST(SpringWorkCorrection, ClassifiesThePairsPath) {
-  const auto path = [](double b0, double b1, double b2, double b3) {
-    SpringHistory h;
-    h.beta[0] = b0, h.beta[1] = b1, h.beta[2] = b2, h.beta[3] = b3;
-    return spring_path(h);
-  };
-  EXPECT_EQ(path(0.5, 0.5, 0.5, 0.5), SpringPath::Steady);
-  EXPECT_EQ(path(0.9, 0.8, 0.7, 0.6), SpringPath::Softening);
-  EXPECT_EQ(path(1.0, 1.0, 1.0, 0.9), SpringPath::Kinked); // starts within the last step
-  EXPECT_EQ(path(1.0, 1.0, 0.9, 0.8), SpringPath::Kinked); // within the stencil's first step
-  EXPECT_EQ(path(1.0, 0.9, 0.8, 0.8), SpringPath::Kinked); // stops (unloading)
-  EXPECT_EQ(path(0.3, 0.2, 0.1, 0.0), SpringPath::Kinked); // the springs vanish
+TEST(SpringWorkCorrection, ClassifiesThePairsSteps) {
+  const int open = static_cast<int>(ContactStatus::Open);
+  const int slip = static_cast<int>(ContactStatus::Slip);
+  // β falling, not falling, reaching 0, and the contact branch: four different regimes.
+  const int falling = spring_regime(0.9, 0.8, open), steady = spring_regime(0.8, 0.8, open);
+  EXPECT_NE(falling, steady);
+  EXPECT_NE(spring_regime(0.1, 0.0, open), falling);
+  EXPECT_NE(spring_regime(0.9, 0.8, slip), falling);
+  EXPECT_EQ(spring_regime(0.5, 0.4, open), falling);
+  SpringHistory h;
+  h.softening = true;
+  h.regime_steps = regime_steps_needed;
+  EXPECT_EQ(spring_path(h), SpringPath::Softening);
+  h.regime_steps = regime_steps_needed - 1; // started softening within the window
+  EXPECT_EQ(spring_path(h), SpringPath::Kinked);
+  h.softening = false;
+  EXPECT_EQ(spring_path(h), SpringPath::Kinked); // stopped (unloading)
+  h.regime_steps = regime_steps_needed;
+  EXPECT_EQ(spring_path(h), SpringPath::Steady);
 }
 
 // On the softening branch (g > g*/√1.25 everywhere): trapezoid + correction is the rule, whose
@@ -70,7 +80,7 @@ TEST(SpringWorkCorrection, MakesTheSofteningSpringsWorkFourthOrder) {
   for (int level = 0; level < 2; ++level) {
     const double h = 0.002 / (1 << level), g1 = 1.5 * g_star;
     const double g[3] = {g1 - h, g1, g1 + h};
-    const SpringHistory hist = history(g1 - 2 * h, g);
+    const SpringHistory hist = history(g, regime_steps_needed);
     ASSERT_EQ(spring_path(hist), SpringPath::Softening);
     const double exact = exact_work(g1, g1 + h);
     trapezoid_error[level] = trapezoid(hist) - exact;
@@ -94,7 +104,8 @@ TEST(SpringWorkCorrection, FallsBackToTheTrapezoidAtTheOnsetOfDebonding) {
     const double h = 0.001 / (1 << level);
     // The onset a third of the way into the stencil's first step.
     const double g[3] = {onset - h / 3, onset + 2 * h / 3, onset + 5 * h / 3};
-    const SpringHistory hist = history(g[0] - h, g);
+    // The pair's regime started at the onset, within the stencil's first step.
+    const SpringHistory hist = history(g, 2);
     EXPECT_EQ(spring_path(hist), SpringPath::Kinked);
     EXPECT_EQ(spring_work_correction(rule, hist), 0.0);
     // What the rule would book there: its own correction, computed without the kink test.
