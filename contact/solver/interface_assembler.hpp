@@ -168,6 +168,11 @@ private:
   struct AccountedPair {
     LocalVector jump, traction, r;
     double beta = 0;
+    /// The state before (jump and adhesive traction): the three-point rule's stencil; the
+    /// last step's regime and for how many steps it has held: its kink test
+    /// (spring_work_correction.hpp).
+    LocalVector prev_jump, prev_adhesive;
+    int regime = -1, regime_steps = 0;
   };
   /// After set_law(): the energy account's start of the next step under the new law
   /// (interface_energy.cpp).
@@ -205,6 +210,9 @@ private:
   double law_change_work_ = 0;
   double accounted_shift_ = 0;
   std::array<double, 3> accounted_obstacle_{0, 0, 0};
+  /// Consecutive recorded states, up to the last, joined by steps on which no interference
+  /// moved and no law changed (at most 3): the rule needs 3 before the step it integrates.
+  int smooth_states_ = 1;
 };
 
 } // namespace bipot::contact

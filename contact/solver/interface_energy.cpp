@@ -1,13 +1,17 @@
 // InterfaceAssembler's share of the run's energy balance (fem/analysis/energy_ledger.hpp):
 // each work term is the trapezoidal rule over the increment, exact for elastic springs at
-// constant β, for friction at constant force and for unilateral contact; what is left is the
-// trapezoidal rule's error on the adhesive springs while β changes within a step
-// (docs/theory.md, "Energy balance").
+// constant β, for friction at constant force and for unilateral contact. While β falls, the
+// springs' share of the external work is integrated by the ledger's three-point rule where
+// the pair's path is smooth (external_work_correction); what is left is that rule's error,
+// and the trapezoid's at kinks (docs/energy_quadrature.md).
 #include "contact/solver/interface_assembler.hpp"
 
 #include "contact/solver/adhesion_loss.hpp"
+#include "contact/solver/spring_work_correction.hpp"
 
 #include "fem/core/error.hpp"
+
+#include <algorithm>
 
 namespace bipot::contact {
 
@@ -19,7 +23,12 @@ void InterfaceAssembler::start_energy_account() {
     // The unloaded jump: the pair's gap (no force acts on it yet).
     p.jump(0) = iface_.initial_gap + iface_.pairs[i].gap + gap_shift_;
     p.beta = committed_[i].beta;
+    p.prev_jump = p.jump;
+    p.prev_adhesive = LocalVector::Zero(dim_);
+    p.regime = -1;
+    p.regime_steps = 0;
   }
+  smooth_states_ = 1;
   accounted_shift_ = gap_shift_;
   accounted_obstacle_ = obstacle_u_;
   account_recorded_ = false;
@@ -34,6 +43,7 @@ void InterfaceAssembler::rebase_energy_account() {
   // term integrates is the law's own at both ends, not the old law's at the start. Before
   // the first recorded step there is nothing to rebase (the account starts unloaded).
   if (!account_recorded_) return;
+  smooth_states_ = 1; // other springs from here: the three-point stencil starts again
   for (std::size_t i = 0; i < accounted_.size(); ++i) {
     AccountedPair& p = accounted_[i];
     const double beta = committed_[i].beta;
@@ -60,6 +70,11 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
     for (int c = 0; c < dim_; ++c)
       d_obstacle(c) = obstacle_u_[c] - accounted_obstacle_[c];
   accounted_obstacle_ = obstacle_u_;
+  // A prescribed interference moves the jumps without the bodies: the springs' work is then
+  // not all external, and the trapezoid stays for the stencil's steps.
+  const bool moved = dshift != 0.0 || d_obstacle.squaredNorm() != 0.0;
+  const bool three_point = energy.rule.three_point && !moved && smooth_states_ >= 3;
+  smooth_states_ = moved ? 1 : std::min(smooth_states_ + 1, 3);
   for (std::size_t i = 0; i < accounted_.size(); ++i) {
     const double A = iface_.pairs[i].weight;
     const PairResult& now = results_[i];
@@ -84,17 +99,46 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
     if (iface_.obstacle)
       energy.interference_work -=
           0.5 * A * (old.traction + now.traction).dot(frame(i).transpose() * d_obstacle);
-    old = {now.jump, now.traction, now.r, now.beta};
+    const int regime = spring_regime(old.beta, now.beta, static_cast<int>(now.status));
+    old.regime_steps = regime == old.regime ? std::min(old.regime_steps + 1, 1 << 20) : 1;
+    old.regime = regime;
+    if (three_point) {
+      SpringHistory h;
+      h.a[0] = old.prev_adhesive;
+      h.a[1] = a_old;
+      h.a[2] = a;
+      h.g[0] = old.prev_jump;
+      h.g[1] = old.jump;
+      h.g[2] = now.jump;
+      h.softening = now.beta < old.beta;
+      h.regime_steps = old.regime_steps;
+      energy.kinked = energy.kinked || spring_path(h) == SpringPath::Kinked;
+      energy.external_work_correction += A * spring_work_correction(energy.rule, h);
+    }
+    old.prev_jump = old.jump;
+    old.prev_adhesive = a_old;
+    old.jump = now.jump;
+    old.traction = now.traction;
+    old.r = now.r;
+    old.beta = now.beta;
   }
 }
 
 std::vector<double> InterfaceAssembler::save_energy_account() const {
-  std::vector<double> v = {accounted_shift_,       accounted_obstacle_[0],
-                           accounted_obstacle_[1], accounted_obstacle_[2],
-                           law_change_work_,       account_recorded_ ? 1.0 : 0.0};
+  std::vector<double> v = {accounted_shift_,
+                           accounted_obstacle_[0],
+                           accounted_obstacle_[1],
+                           accounted_obstacle_[2],
+                           law_change_work_,
+                           account_recorded_ ? 1.0 : 0.0,
+                           static_cast<double>(smooth_states_)};
   for (const AccountedPair& p : accounted_) {
     v.push_back(p.beta);
     for (const auto* x : {&p.jump, &p.traction, &p.r})
+      v.insert(v.end(), x->data(), x->data() + x->size());
+    v.push_back(p.regime);
+    v.push_back(p.regime_steps);
+    for (const auto* x : {&p.prev_jump, &p.prev_adhesive})
       v.insert(v.end(), x->data(), x->data() + x->size());
   }
   return v;
@@ -103,21 +147,34 @@ std::vector<double> InterfaceAssembler::save_energy_account() const {
 void InterfaceAssembler::load_energy_account(const std::vector<double>& v) {
   start_energy_account(); // sizes every pair's vectors
   const std::size_t n = static_cast<std::size_t>(dim_);
-  const std::size_t head = 6;
-  if (v.size() != head + accounted_.size() * (1 + 3 * n))
+  // A checkpoint written before the three-point rule has no stencil (6 head values, a pair's
+  // β, jump, traction and r): it loads, and the rule starts again from it.
+  const std::size_t old_size = 6 + accounted_.size() * (1 + 3 * n);
+  const std::size_t size = 7 + accounted_.size() * (3 + 5 * n);
+  if (v.size() != size && v.size() != old_size)
     throw Error("interface '" + iface_.name + "': the energy state has " +
                 std::to_string(v.size()) + " values, its " + std::to_string(accounted_.size()) +
-                " pairs need " + std::to_string(head + accounted_.size() * (1 + 3 * n)));
+                " pairs need " + std::to_string(size));
+  const bool stencil = v.size() == size;
   accounted_shift_ = v[0];
   accounted_obstacle_ = {v[1], v[2], v[3]};
   law_change_work_ = v[4];
   account_recorded_ = v[5] != 0.0;
-  std::size_t at = head;
+  smooth_states_ = stencil ? static_cast<int>(v[6]) : 1;
+  std::size_t at = stencil ? 7 : 6;
+  const auto read = [&](LocalVector& x) {
+    for (std::size_t i = 0; i < n; ++i)
+      x(static_cast<Eigen::Index>(i)) = v[at++];
+  };
   for (AccountedPair& p : accounted_) {
     p.beta = v[at++];
     for (auto* x : {&p.jump, &p.traction, &p.r})
-      for (std::size_t i = 0; i < n; ++i)
-        (*x)(static_cast<Eigen::Index>(i)) = v[at++];
+      read(*x);
+    if (!stencil) continue;
+    p.regime = static_cast<int>(v[at++]);
+    p.regime_steps = static_cast<int>(v[at++]);
+    read(p.prev_jump);
+    read(p.prev_adhesive);
   }
 }
 

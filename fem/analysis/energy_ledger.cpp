@@ -33,31 +33,52 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
     external_.assign(u.size(), 0.0);
     internal_.assign(u.size(), 0.0);
   }
+  double chord = 0;
   for (std::size_t d = 0; d < u.size(); ++d) {
     const double du = u[d] - u_[d];
     totals_.external_work += 0.5 * (external_[d] + external[d]) * du;
     totals_.bulk_energy += 0.5 * (internal_[d] + internal[d]) * du;
+    chord += du * du;
   }
+  chord = std::sqrt(chord);
   u_ = u;
   external_ = external;
   internal_ = internal;
+  // The rule's parameter is the chord length of u, which grows along any path, traced
+  // branches included (the load factor turns back at limit points). Steps whose lengths
+  // differ by more than max_step_ratio keep the trapezoid (docs/energy_quadrature.md).
+  const bool comparable = last_chord_ > 0 && chord > 0 &&
+                          chord <= ThreePointRule::max_step_ratio * last_chord_ &&
+                          last_chord_ <= ThreePointRule::max_step_ratio * chord;
+  const ThreePointRule rule =
+      comparable ? ThreePointRule::quadratic(last_chord_, chord) : ThreePointRule::trapezoid();
+  last_chord_ = chord;
 
   totals_.interface_energy = 0;
+  // A kink anywhere (a pair starting to soften) is one in every pair's path: the rule's
+  // corrections count only if no interface saw one.
+  double correction = 0;
+  bool kinked = false;
   for (const auto& ia : ifaces_) {
     InterfaceEnergy e;
+    e.rule = rule;
     ia->record_energy(e);
+    correction += e.external_work_correction;
+    kinked = kinked || e.kinked;
     totals_.interference_work += e.interference_work;
     totals_.interface_energy += e.stored;
     totals_.adhesion_dissipation += e.adhesion_dissipation;
     totals_.viscous_dissipation += e.viscous_dissipation;
     totals_.contact_work += e.contact_work;
   }
+  if (!kinked) totals_.external_work += correction;
 }
 
 EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector<double>& external,
                                  const std::vector<double>& internal) {
   // record() and back: the interfaces update their accounts only through record_energy().
   const EnergyTotals totals = totals_;
+  const double chord = last_chord_;
   const std::vector<double> u_old = u_, external_old = external_, internal_old = internal_;
   std::vector<std::vector<double>> accounts;
   for (const auto& ia : ifaces_)
@@ -65,6 +86,7 @@ EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector
   record(u, external, internal);
   const EnergyTotals out = totals_;
   totals_ = totals;
+  last_chord_ = chord;
   u_ = u_old;
   external_ = external_old;
   internal_ = internal_old;
@@ -75,6 +97,7 @@ EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector
 
 void EnergyLedger::reset_displacements() {
   std::fill(u_.begin(), u_.end(), 0.0);
+  break_path();
 }
 
 } // namespace bipot

@@ -3,9 +3,13 @@
 /// and of prescribed interface interferences against the energy stored in the bodies and the
 /// interfaces and what the interfaces dissipate. The bulk terms are the trapezoidal rule over
 /// the increment, exact for a linear bulk; each interface keeps its own account
-/// (InterfaceEnforcement::record_energy). What is left (`balance_error`) is the trapezoidal
-/// rule's error on the adhesive springs while β changes within a step — the
-/// time-discretisation error of the energy, not a solver error (docs/theory.md).
+/// (InterfaceEnforcement::record_energy). Where β falls, the adhesive springs' share of the
+/// external work is integrated by a three-point rule (ThreePointRule, parameter: the chord
+/// length ‖Δu‖ of the steps) through the last three states of a smooth stretch of the path,
+/// a correction the interfaces compute pair by pair (the trapezoid at kinks and after
+/// break_path()). What is left (`balance_error`) is that quadrature's error: the
+/// discretisation error of the energy's measurement, not a solver error
+/// (docs/energy_quadrature.md).
 
 #include "fem/assembly/interface_enforcement.hpp"
 #include "fem/core/state_arrays.hpp"
@@ -49,11 +53,15 @@ public:
   /// is committed (EnergyStepControl) and recorded only if it is kept.
   EnergyTotals trial(const std::vector<double>& u, const std::vector<double>& external,
                      const std::vector<double>& internal);
-  /// The displacements were reset to zero with the stresses kept (geostatic stage).
+  /// The displacements were reset to zero with the stresses kept (geostatic stage); the path
+  /// starts again (break_path()).
   void reset_displacements();
+  /// The path is not known to be smooth from the last recorded state on (a stage starts, a
+  /// jump): the next step is integrated by the trapezoidal rule.
+  void break_path() { last_chord_ = 0; }
   const EnergyTotals& totals() const { return totals_; }
   /// Its whole state for a checkpoint (energy_ledger_state.cpp): the totals, the last step's
-  /// u and forces, and every interface's account.
+  /// u and forces, its chord length, and every interface's account.
   StateArrays save_state() const;
   /// Restores save_state()'s arrays; throws bipot::Error if they do not fit.
   void load_state(const StateArrays& state);
@@ -62,6 +70,8 @@ private:
   const std::vector<std::unique_ptr<InterfaceEnforcement>>& ifaces_;
   EnergyTotals totals_;
   std::vector<double> u_, external_, internal_;
+  /// ‖Δu‖ of the last recorded step; 0: the path starts again.
+  double last_chord_ = 0;
 };
 
 } // namespace bipot

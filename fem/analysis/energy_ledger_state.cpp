@@ -13,6 +13,7 @@ StateArrays EnergyLedger::save_state() const {
   out["u"] = u_;
   out["external"] = external_;
   out["internal"] = internal_;
+  out["path"] = {last_chord_};
   for (std::size_t k = 0; k < ifaces_.size(); ++k)
     out["interface." + std::to_string(k)] = ifaces_[k]->save_energy_account();
   return out;
@@ -30,6 +31,9 @@ void EnergyLedger::load_state(const StateArrays& state) {
   u_ = get("u");
   external_ = get("external");
   internal_ = get("internal");
+  // Checkpoints written before the three-point rule have no "path": the rule starts again.
+  const auto path = state.find("path");
+  last_chord_ = path != state.end() && path->second.size() == 1 ? path->second[0] : 0.0;
   for (std::size_t k = 0; k < ifaces_.size(); ++k)
     ifaces_[k]->load_energy_account(get("interface." + std::to_string(k)));
 }

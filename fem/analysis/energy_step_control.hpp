@@ -15,8 +15,10 @@
 ///     that rule the pile's traced path would be held to the share everywhere; without the
 ///     share, the column's first traced steps spent errors that P, 6 times smaller at the
 ///     bottom of its snap-back, could not carry.
-/// The error is the trapezoidal rule's on the softening springs: per step third order in its
-/// length, against a share of first order, so a halving divides their ratio by about 4.
+/// The error is the ledger's quadrature's on the softening springs: per step third order in
+/// its length (the trapezoid; fourth where the three-point rule applies, which the growth
+/// test leaves aside, erring on the cautious side), against a share of first order, so a
+/// halving divides their ratio by about 4 (or 8).
 ///
 /// An increment still outside its budget at the smallest step allowed (a jump, whose energy
 /// goes into a snap no quasi-static ledger sees) is accepted and flagged, never retried, and

@@ -102,6 +102,9 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     double failed_seconds = 0;
     PathControl path(stage, newton_system.get(), interfaces);
     energy_control.begin_stage(stage.energy_tolerance, energy->totals());
+    // Another stage drives the bodies along another path: the ledger's three-point rule does
+    // not reach back across its start.
+    if (!resuming) energy->break_path();
     // energy_halvings: of the increment under way; energy_level: the part of the cut-back
     // level owed to the energy budget, which says nothing of the solver's convergence.
     int traced_steps = 0, energy_halvings = 0;
@@ -303,7 +306,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.commit();
       reaction_all = std::move(reactions);
       reaction_scale = reaction.norm2();
+      // The staggered fallback jumps: no smooth path joins its states to the ones before.
+      if (log.staggered > 0) energy->break_path();
       energy->record(u, external, internal);
+      if (log.staggered > 0) energy->break_path();
       energy_control.accept(energy_before, energy->totals(), energy_verdict);
       // A step the energy budget shortened, or one whose error leaves no room for a longer
       // one (traced steps grow by 1.5, the ramp by 2), does not grow.

@@ -12,6 +12,7 @@
 #include "fem/assembly/rigid_body_constraint.hpp"
 #include "fem/core/interface_point.hpp"
 #include "fem/core/state_arrays.hpp"
+#include "fem/core/three_point_rule.hpp"
 #include "fem/core/types.hpp"
 
 #include <array>
@@ -51,6 +52,14 @@ const char* to_string(PairStatus status);
 /// stored in it now and the increments of what it dissipates and of the work of prescribed
 /// interface motions (docs/theory.md, "Energy balance").
 struct InterfaceEnergy {
+  /// In: the ledger's rule for the step's path integrals (the trapezoid where the path is not
+  /// known to be smooth over the last two steps).
+  ThreePointRule rule;
+  /// Out: what the rule adds to the trapezoidal external work on the adhesive springs
+  /// (docs/energy_quadrature.md), and whether some pair's path has a kink within the rule's
+  /// stencil (then the ledger keeps the trapezoid for all).
+  double external_work_correction = 0;
+  bool kinked = false;
   double interference_work = 0;    ///< of gap shifts, moving obstacles and law changes
   double stored = 0;               ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
   double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost
