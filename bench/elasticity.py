@@ -43,7 +43,7 @@ output: {{directory: {out}, vtk: false}}
 
 SUMMARY = re.compile(
     r"(\d+) linear solves \((\d+) iterations\).*?time ([\d.]+) s = assembly ([\d.]+) \+ set-up "
-    r"([\d.]+) \+ solve ([\d.]+) \+ output ([\d.]+).*?peak memory ([\d.]+) MB", re.S)
+    r"([\d.]+) \+ solve ([\d.]+) \+ output ([\d.]+).*?peak memory ([\d.]+) MiB", re.S)
 DOFS = re.compile(r"(\d+) DOFs on")
 
 
@@ -93,7 +93,7 @@ def main():
                 r = results[(n, np_)]
                 print(f"# n={n} np={np_}: {r}", file=sys.stderr, flush=True)
     print("| DOFs | ranks | assembly s | set-up s | solve s | CG iterations | total s | "
-          "peak MB/rank | bytes/DOF (all ranks) |")
+          "peak MiB/rank | bytes/DOF (all ranks) |")
     print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for (n, np_), r in sorted(results.items()):
         print(f"| {r['dofs']} | {np_} | {r['assembly']:.2f} | {r['setup']:.2f} | "

@@ -68,7 +68,7 @@ def run(bipot, k, increments, workdir):
     newton = [int(m.group(1)) for m in re.finditer(r"newton\s+(\d+)", text)]
     cut = re.search(r"(\d+) cut-backs?\b", text)
     t = re.search(r"time ([\d.]+) s = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+)"
-                  r".*peak memory ([\d.]+) MB", text)
+                  r".*peak memory ([\d.]+) MiB", text)
     dofs = re.search(r"(\d+) DOFs", text)
     with open(os.path.join(out_dir, "reactions.csv")) as f:
         rows = list(csv.DictReader(f))
@@ -95,7 +95,7 @@ def main():
             print(f"| {k} | {r['dofs']} | {r['increments']} | {r['newton']} "
                   f"({r['newton'] / r['increments']:.2f}) | {r['cutbacks']} | "
                   f"{r['seconds']:.1f} s | {r['assembly']:.1f} s | {r['setup']:.1f} s | "
-                  f"{r['solve']:.1f} s | {r['memory']:.0f} MB | {r['q_over_c']:.4f} "
+                  f"{r['solve']:.1f} s | {r['memory']:.0f} MiB | {r['q_over_c']:.4f} "
                   f"({100 * (r['q_over_c'] / (2 + math.pi) - 1):+.2f} %) |", flush=True)
 
 

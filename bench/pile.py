@@ -43,7 +43,7 @@ def run(app, path, workdir):
     s = re.search(r"(\d+) increments, (\d+) linear solves \((\d+) Krylov iterations\), "
                   r"(\d+) matrix set-ups; time ([\d.]+) s"
                   r" = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+).*peak memory "
-                  r"([\d.]+) MB", text)
+                  r"([\d.]+) MiB", text)
     peak = re.search(r"peak pull-out force ([\d.]+) kN at ([\d.]+) mm", text)
     return {"dofs": int(m.group(1)) if m else 0, "increments": int(s.group(1)),
             "solves": int(s.group(2)), "krylov": int(s.group(3)), "setups": int(s.group(4)),
@@ -104,7 +104,7 @@ def main():
         print("|---|---|---|---|---|---|---|---|---|---|")
         print(f"| {label} | {med['dofs']} | {med['increments']:.0f} | {med['solves']:.0f} | "
               f"{med['setups']:.0f} | {med['seconds']:.1f} s | {med['assembly']:.1f} s | "
-              f"{med['setup']:.1f} s | {med['solve']:.1f} s | {med['memory']:.0f} MB |")
+              f"{med['setup']:.1f} s | {med['solve']:.1f} s | {med['memory']:.0f} MiB |")
         times = ", ".join("%.1f" % r["seconds"] for r in runs)
         print(f"(times of the {a.repeat} runs: {times} s)\n", flush=True)
     rows = []
@@ -126,7 +126,7 @@ def main():
         rows.append(r)
         print(f"| {k} | {r['dofs']} | {r['increments']} | {r['solves']} | {r['krylov']} | "
               f"{r['seconds']:.1f} s | {r['assembly']:.1f} s | "
-              f"{r['setup']:.1f} s | {r['solve']:.1f} s | {r['memory']:.0f} MB | "
+              f"{r['setup']:.1f} s | {r['solve']:.1f} s | {r['memory']:.0f} MiB | "
               f"{r['peak']:.1f} kN | {expo} |", flush=True)
     if len(rows) > 1:
         xs = [math.log(r["dofs"]) for r in rows]

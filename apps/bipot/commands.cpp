@@ -166,15 +166,15 @@ int run_command(const std::vector<std::string>& args, const Catalogue& catalogue
       });
     }
     folder.finish();
-    const double peak_mb = max_all(peak_memory_mb());
+    const double peak_mib = max_all(peak_memory_mib());
     if (root()) {
       std::printf("bipot: done: %d increments, %d linear solves (%d iterations), %d matrix "
                   "set-ups\n"
                   "bipot: time %.3f s = assembly %.3f + set-up %.3f + solve %.3f + output %.3f "
-                  "+ other; peak memory %.1f MB per rank\n",
+                  "+ other; peak memory %.1f MiB per rank\n",
                   summary.steps, summary.linear_solves, summary.linear_iterations,
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
-                  summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+                  summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mib);
       std::cout << app::stepping_summary(summary, "bipot") << "\n";
       std::cout << "bipot: results in " << folder.directory()
                 << " (ParaView: " << folder.directory() << "/solution.pvd)\n";

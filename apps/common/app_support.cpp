@@ -178,7 +178,7 @@ int report_error(const std::exception& e, int code, const std::string& program) 
   return code;
 }
 
-double peak_memory_mb() {
+double peak_memory_mib() {
   std::ifstream status("/proc/self/status");
   for (std::string line; std::getline(status, line);)
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;

@@ -59,7 +59,8 @@ template <class F> int run_guarded(const std::string& program, F&& body) {
 std::unique_ptr<ParallelEnvironment>
 start_parallel(int argc, char** argv, const std::string& program, std::vector<std::string>& args);
 
-/// Peak resident memory of this process (VmHWM), MB; 0 where /proc is not available.
-double peak_memory_mb();
+/// Peak resident memory of this process (VmHWM), MiB (2^20 bytes); 0 where /proc is not
+/// available.
+double peak_memory_mib();
 
 } // namespace bipot::app

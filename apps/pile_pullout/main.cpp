@@ -114,7 +114,7 @@ int run(const std::string& file, const std::string& output, const std::string& r
                 r.iterations, r.seconds, app::step_flags(r).c_str());
     std::fflush(stdout);
   });
-  const double peak_mb = max_all(app::peak_memory_mb());
+  const double peak_mib = max_all(app::peak_memory_mib());
   if (root && plots) plot(folder.working(), spec.name);
   folder.finish();
   if (!root) return 0;
@@ -123,10 +123,10 @@ int run(const std::string& file, const std::string& output, const std::string& r
               1e3 * results.last().displacement);
   std::printf("pile_pullout: %d increments, %d linear solves (%ld Krylov iterations), %d matrix "
               "set-ups; time %.2f s = assembly %.2f + set-up %.2f + solve %.2f + output %.2f + "
-              "other; peak memory %.1f MB per rank\n",
+              "other; peak memory %.1f MiB per rank\n",
               summary.steps, summary.linear_solves, static_cast<long>(summary.linear_iterations),
               summary.matrix_setups, summary.seconds, summary.assembly_seconds,
-              summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mb);
+              summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mib);
   std::cout << app::stepping_summary(summary, "pile_pullout") << "\n";
   // List what is there: a bonded shaft has no profiles to plot.
   const std::string& dir = folder.directory();
