@@ -66,6 +66,13 @@ template <> struct ParamTraits<std::string> {
   static std::string read(const ParameterSet& s, const std::string& k) { return s.string(k); }
   static ParamValue write(const std::string& v) { return v; }
 };
+template <> struct ParamTraits<std::vector<double>> {
+  static constexpr ParamType type = ParamType::RealList;
+  static std::vector<double> read(const ParameterSet& s, const std::string& k) {
+    return s.real_list(k);
+  }
+  static ParamValue write(const std::vector<double>& v) { return v; }
+};
 
 template <class T> struct IsOptional : std::false_type {};
 template <class T> struct IsOptional<std::optional<T>> : std::true_type { using value_type = T; };
@@ -100,6 +107,13 @@ public:
   template <class T, class C>
   ParamSpec& string(const std::string& key, T C::*member, const std::string& doc) {
     return bind<ParamType::String>(ParamSchema::string(key, doc), member);
+  }
+  /// A list-of-reals key bound to a std::vector<double> member; its range applies to each
+  /// entry (`.strictly_increasing()` to order them).
+  template <class T, class C>
+  ParamSpec& real_list(const std::string& key, T C::*member, const std::string& units,
+                       const std::string& doc) {
+    return bind<ParamType::RealList>(ParamSchema::real_list(key, units, doc), member);
   }
   /// A string key bound to an enum member: `names` gives the allowed strings (the key's
   /// one_of list, in that order) and the value each one stands for.

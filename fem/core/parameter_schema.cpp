@@ -22,6 +22,8 @@ const char* to_string(ParamType type) {
     return "boolean";
   case ParamType::String:
     return "string";
+  case ParamType::RealList:
+    return "list of reals";
   }
   return "?";
 }
@@ -34,7 +36,12 @@ std::string format_value(const ParamValue& value) {
     os << *i;
   else if (auto b = std::get_if<bool>(&value))
     os << (*b ? "true" : "false");
-  else
+  else if (auto list = std::get_if<std::vector<double>>(&value)) {
+    os << '[';
+    for (std::size_t k = 0; k < list->size(); ++k)
+      os << (k ? ", " : "") << (*list)[k];
+    os << ']';
+  } else
     os << '"' << std::get<std::string>(value) << '"';
   return os.str();
 }
@@ -86,7 +93,19 @@ ParamSpec& ParamSpec::one_of(std::vector<std::string> allowed) {
   return *this;
 }
 
+ParamSpec& ParamSpec::strictly_increasing() {
+  increasing = true;
+  return *this;
+}
+
 std::string ParamSpec::range_text() const {
+  if (type != ParamType::RealList) return interval_text();
+  const std::string each = interval_text();
+  if (each.empty()) return increasing ? "increasing" : "";
+  return "each in " + each + (increasing ? ", increasing" : "");
+}
+
+std::string ParamSpec::interval_text() const {
   if (std::isinf(lower) && std::isinf(upper)) return "";
   std::ostringstream os;
   // An integer key's bounds in full: [1, 1000000], not [1, 1e+06].
@@ -130,11 +149,20 @@ std::optional<std::string> ParamSpec::check(const ParamValue& value) const {
   const bool below = lower_open ? !(x > lower) : !(x >= lower);
   const bool above = upper_open ? !(x < upper) : !(x <= upper);
   if (std::isnan(x) || below || above) {
-    std::string msg = "value " + format_value(value) + " is out of range " + range_text();
+    std::string msg = "value " + format_value(value) + " is out of range " + interval_text();
     if (!units.empty()) msg += " " + units;
     if (!range_reason.empty()) msg += ": " + range_reason;
     return msg;
   }
+  return std::nullopt;
+}
+
+std::optional<std::string> ParamSpec::check_entry(const std::vector<double>& list,
+                                                  std::size_t i) const {
+  if (auto msg = check(list[i])) return msg;
+  if (increasing && i > 0 && !(list[i] > list[i - 1]))
+    return "value " + format_value(list[i]) + " does not exceed the entry before it (" +
+           format_value(list[i - 1]) + "): the entries must increase";
   return std::nullopt;
 }
 
@@ -173,40 +201,33 @@ const ParamSpec* ParamSchema::find(const std::string& key) const {
   return nullptr;
 }
 
-ParamSpec& ParamSchema::add(ParamSpec spec) {
-  specs_.push_back(std::move(spec));
+ParamSpec& ParamSchema::add(const std::string& key, ParamType type, const std::string& units,
+                            const std::string& doc) {
+  ParamSpec s;
+  s.name = key;
+  s.type = type;
+  s.units = units;
+  s.doc = doc;
+  specs_.push_back(std::move(s));
   return specs_.back();
 }
 
 ParamSpec& ParamSchema::real(const std::string& key, const std::string& units,
                              const std::string& doc) {
-  ParamSpec s;
-  s.name = key;
-  s.type = ParamType::Real;
-  s.units = units;
-  s.doc = doc;
-  return add(std::move(s));
+  return add(key, ParamType::Real, units, doc);
 }
 ParamSpec& ParamSchema::integer(const std::string& key, const std::string& doc) {
-  ParamSpec s;
-  s.name = key;
-  s.type = ParamType::Integer;
-  s.doc = doc;
-  return add(std::move(s));
+  return add(key, ParamType::Integer, "", doc);
 }
 ParamSpec& ParamSchema::boolean(const std::string& key, const std::string& doc) {
-  ParamSpec s;
-  s.name = key;
-  s.type = ParamType::Boolean;
-  s.doc = doc;
-  return add(std::move(s));
+  return add(key, ParamType::Boolean, "", doc);
 }
 ParamSpec& ParamSchema::string(const std::string& key, const std::string& doc) {
-  ParamSpec s;
-  s.name = key;
-  s.type = ParamType::String;
-  s.doc = doc;
-  return add(std::move(s));
+  return add(key, ParamType::String, "", doc);
+}
+ParamSpec& ParamSchema::real_list(const std::string& key, const std::string& units,
+                                  const std::string& doc) {
+  return add(key, ParamType::RealList, units, doc);
 }
 
 std::string ParamSchema::describe() const {
@@ -262,6 +283,10 @@ const std::string& ParameterSet::string(const std::string& key) const {
   if (auto s = std::get_if<std::string>(&at(key))) return *s;
   throw Error("parameter '" + key + "' is not a string");
 }
+const std::vector<double>& ParameterSet::real_list(const std::string& key) const {
+  if (auto l = std::get_if<std::vector<double>>(&at(key))) return *l;
+  throw Error("parameter '" + key + "' is not a list of reals");
+}
 
 namespace {
 bool type_matches(ParamType type, ParamValue& value) {
@@ -275,6 +300,8 @@ bool type_matches(ParamType type, ParamValue& value) {
     return std::holds_alternative<bool>(value);
   case ParamType::String:
     return std::holds_alternative<std::string>(value);
+  case ParamType::RealList:
+    return std::holds_alternative<std::vector<double>>(value);
   }
   return false;
 }
@@ -300,7 +327,13 @@ std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& give
                                    ", got " + format_value(value)});
       continue;
     }
-    if (auto msg = spec->check(v)) {
+    if (auto list = std::get_if<std::vector<double>>(&v)) {
+      // Every bad entry is reported, each at its own place; one makes the key invalid.
+      const std::size_t before = problems.size();
+      for (std::size_t k = 0; k < list->size(); ++k)
+        if (auto msg = spec->check_entry(*list, k)) problems.push_back({key, *msg, k});
+      if (problems.size() > before) continue;
+    } else if (auto msg = spec->check(v)) {
       problems.push_back({key, *msg});
       continue;
     }
@@ -337,7 +370,8 @@ void validate_or_throw(const ParamSchema& schema, ParameterSet& given) {
   if (problems.empty()) return;
   std::vector<std::string> lines;
   for (const auto& p : problems)
-    lines.push_back(schema.name() + "." + p.key + ": " + p.message);
+    lines.push_back(schema.name() + "." + p.key +
+                    (p.entry ? "[" + std::to_string(*p.entry) + "]" : "") + ": " + p.message);
   throw InputError(lines);
 }
 

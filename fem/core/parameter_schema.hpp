@@ -13,13 +13,14 @@
 
 namespace bipot {
 
-enum class ParamType { Real, Integer, Boolean, String };
+/// RealList: a list of reals (load factors, levels), each entry within the key's range.
+enum class ParamType { Real, Integer, Boolean, String, RealList };
 
-/// "real", "integer", "boolean", "string".
+/// "real", "integer", "boolean", "string", "list of reals".
 const char* to_string(ParamType type);
 
 /// A parameter value as given by the user or a default.
-using ParamValue = std::variant<double, long, bool, std::string>;
+using ParamValue = std::variant<double, long, bool, std::string, std::vector<double>>;
 
 /// One key of a schema. Built fluently: `schema.real("youngs_modulus", "kPa", "...").positive()`.
 struct ParamSpec {
@@ -38,6 +39,7 @@ struct ParamSpec {
   bool upper_open = true;
   std::vector<std::string> choices; ///< allowed strings, empty = any
   std::string range_reason;         ///< why the range is what it is, for the message ("" = none)
+  bool increasing = false;          ///< a list's entries must increase strictly
 
   ParamSpec& with_default(ParamValue v);
   /// The default is the bound member's initial value (ParamSchemaOf keys): written once, in
@@ -55,12 +57,21 @@ struct ParamSpec {
   ParamSpec& one_of(std::vector<std::string> allowed);
   /// Appended to the out-of-range message, for a bound that is not obvious.
   ParamSpec& because(std::string reason);
+  /// A list whose entries must increase strictly (each greater than the one before).
+  ParamSpec& strictly_increasing();
 
-  /// "[0, 1]", "(0, inf)", "" when unbounded.
+  /// The bounds: "[0, 1]", "(0, inf)", "" when unbounded.
+  std::string interval_text() const;
+  /// The interval_text() of a scalar; a list's says what applies to each entry and to their
+  /// order: "each in (0, 1], increasing".
   std::string range_text() const;
-  /// The problem with a value of the right type, if any, e.g.
-  /// "value -3 is out of range (0, inf) kPa". Type mismatches are the caller's business.
+  /// The problem with a scalar value of the right type, if any, e.g.
+  /// "value -3 is out of range (0, inf) kPa". Type mismatches are the caller's business; a
+  /// list's entries are checked one by one (check_entry).
   std::optional<std::string> check(const ParamValue& value) const;
+  /// The problem with entry `i` of a list, if any: out of range (as check()), or, for a
+  /// strictly_increasing() key, not greater than the entry before it.
+  std::optional<std::string> check_entry(const std::vector<double>& list, std::size_t i) const;
   /// "real, required, (0, inf) kPa: Young's modulus" — one line for --describe and docs.
   std::string summary() const;
 };
@@ -94,6 +105,8 @@ public:
   ParamSpec& integer(const std::string& key, const std::string& doc);
   ParamSpec& boolean(const std::string& key, const std::string& doc);
   ParamSpec& string(const std::string& key, const std::string& doc);
+  /// A list of reals; the range set on it (positive(), at_most(), ...) applies to each entry.
+  ParamSpec& real_list(const std::string& key, const std::string& units, const std::string& doc);
   /// Adds a cross-key rule (see ParamRule).
   void rule(ParamRule rule) { rules_.push_back(std::move(rule)); }
   const std::vector<ParamRule>& rules() const { return rules_; }
@@ -104,7 +117,8 @@ public:
   std::string markdown_table() const;
 
 private:
-  ParamSpec& add(ParamSpec spec);
+  ParamSpec& add(const std::string& key, ParamType type, const std::string& units,
+                 const std::string& doc);
   std::string name_;
   std::string doc_;
   std::vector<ParamSpec> specs_;
@@ -121,6 +135,7 @@ public:
   long integer(const std::string& key) const;
   bool boolean(const std::string& key) const;
   const std::string& string(const std::string& key) const;
+  const std::vector<double>& real_list(const std::string& key) const;
   const std::map<std::string, ParamValue>& values() const { return values_; }
 
 private:
@@ -128,23 +143,26 @@ private:
   std::map<std::string, ParamValue> values_;
 };
 
-/// One problem found by validate(): the key it concerns and a message.
+/// One problem found by validate(): the key it concerns and a message; for a list key, the
+/// entry at fault (reported as key[entry], at that entry's line).
 struct ParamProblem {
   std::string key;
   std::string message;
+  std::optional<std::size_t> entry = std::nullopt;
 };
 
 /// Checks `given` against `schema` (unknown keys with the nearest valid one, missing required
-/// keys with their doc, wrong types, out-of-range values, then, if all of that passed, the
-/// schema's cross-key rules) and fills in defaults.
+/// keys with their doc, wrong types, out-of-range values and every bad entry of a list, then,
+/// if all of that passed, the schema's cross-key rules) and fills in defaults.
 /// An integer given where a real is expected is accepted and converted.
 std::vector<ParamProblem> validate(const ParamSchema& schema, ParameterSet& given);
 
-/// validate(), then throws InputError listing every problem as "<schema>.<key>: message".
+/// validate(), then throws InputError listing every problem as "<schema>.<key>: message"
+/// ("<schema>.<key>[i]: message" for a list's entry i).
 /// For objects built from code rather than from an input file.
 void validate_or_throw(const ParamSchema& schema, ParameterSet& given);
 
-/// Formats a value for messages ("1e+30", "true", "\"abc\"").
+/// Formats a value for messages ("1e+30", "true", "\"abc\"", "[0.5, 1]").
 std::string format_value(const ParamValue& value);
 
 } // namespace bipot

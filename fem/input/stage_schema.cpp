@@ -52,6 +52,15 @@ ParamSchemaOf<StageSpec> stage_schema() {
             "geostatic stage)")
       .defaulted();
   add_energy_tolerance_key(s, &S::energy_tolerance);
+  s.real_list("output_at", &S::output_at, "",
+              "load factors at which the ramp also ends an increment exactly and writes the "
+              "results, VTK included whatever output.every says (traced steps do not stop on "
+              "them)")
+      .greater_than(0.0)
+      .at_most(1.0)
+      .strictly_increasing()
+      .because("load factors are fractions of the stage")
+      .defaulted();
   return s;
 }
 

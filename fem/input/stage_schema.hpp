@@ -1,16 +1,16 @@
 #pragma once
-/// The scalar keys of a load stage and of its `control` mapping, each declared once and bound
+/// A load stage's own keys and those of its `control` mapping, each declared once and bound
 /// to its StageSpec / ControlSpec member. The input reader reads them through these schemas,
-/// `bipot describe stage` / `bipot describe control` print them and docs/input_reference.md
-/// shows their tables. The list-valued keys of a stage (boundary_conditions, loads, ...) have
-/// readers of their own (fem/input/detail/stage_section.cpp).
+/// `bipot describe stage` / `bipot describe control` print them and docs/input_stages.md
+/// shows their tables. The keys that hold lists of maps (boundary_conditions, loads, ...)
+/// have readers of their own (fem/input/detail/stage_section.cpp).
 
 #include "fem/core/parameter_binding.hpp"
 #include "fem/input/problem_spec.hpp"
 
 namespace bipot {
 
-/// `increments`, `duration`, `reset_displacements`, `energy_tolerance`.
+/// `increments`, `duration`, `reset_displacements`, `energy_tolerance`, `output_at`.
 ParamSchemaOf<StageSpec> stage_schema();
 /// `type`, `arc_length`, `dissipation_step`, `max_increments`, with the rules saying which
 /// key belongs to which type (reported at the key, and listed by `bipot describe control`).

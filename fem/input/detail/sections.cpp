@@ -164,6 +164,26 @@ MeshSpec read_mesh(const YamlMap& top, int dim, const std::string& base_dir) {
   return mesh;
 }
 
+namespace {
+
+// A list of reals: "" and the entries, or what is wrong with the node itself. An entry that is
+// not a number is reported here, at its own line as path[i]; then `bad` is set.
+std::string decode_real_list(const YAML::Node& v, const std::string& path, Diagnostics& diag,
+                             std::vector<double>& out, bool& bad) {
+  if (!v.IsSequence()) return "expected a list of real numbers, got " + describe_node(v);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    double d = 0;
+    if (!decode_real(v[i], d)) {
+      diag.error(v[i], index_path(path, i), "expected a real number, got " + describe_node(v[i]));
+      bad = true;
+    }
+    out.push_back(d);
+  }
+  return "";
+}
+
+} // namespace
+
 ParameterSet read_parameters_node(const YAML::Node& node, const std::string& path,
                                   Diagnostics& diag, const ParamSchema& schema,
                                   const std::vector<std::string>& skip, const ParameterSet* base) {
@@ -173,18 +193,20 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
     return params;
   }
   report_duplicate_keys(node, path, diag);
-  std::map<std::string, YAML::Node> key_nodes;
+  std::map<std::string, YAML::Node> key_nodes, value_nodes;
   for (const auto& kv : node) {
     const std::string key = kv.first.Scalar();
     if (std::find(skip.begin(), skip.end(), key) != skip.end()) continue;
     key_nodes[key] = kv.first;
+    value_nodes[key] = kv.second;
     const ParamSpec* spec = schema.find(key);
     const YAML::Node& v = kv.second;
     ParamValue value = v.IsScalar() ? ParamValue(v.Scalar()) : ParamValue(describe_node(v));
     if (spec) {
       double d = 0;
       int i = 0;
-      bool b = false;
+      bool b = false, bad_entry = false;
+      std::vector<double> list;
       std::string problem;
       const auto expect = [&](bool ok, const char* what) {
         if (!ok) problem = std::string("expected ") + what + ", got " + describe_node(v);
@@ -205,19 +227,29 @@ ParameterSet read_parameters_node(const YAML::Node& node, const std::string& pat
       case ParamType::String:
         expect(v.IsScalar(), "a string");
         break;
+      case ParamType::RealList:
+        problem = decode_real_list(v, join_path(path, key), diag, list, bad_entry);
+        value = list;
+        break;
       }
-      if (!problem.empty()) {
-        diag.error(kv.first, join_path(path, key), problem);
-        continue;
-      }
+      if (!problem.empty()) diag.error(kv.first, join_path(path, key), problem);
+      if (!problem.empty() || bad_entry) continue;
     }
     params.set(key, value);
   }
   const auto problems = validate(schema, params);
   for (const auto& p : problems) {
+    const std::string at_path =
+        p.entry ? index_path(join_path(path, p.key), *p.entry) : join_path(path, p.key);
+    const auto list = value_nodes.find(p.key);
+    if (p.entry && list != value_nodes.end()) { // a list's entry, at its own line
+      const YAML::Node& entries = list->second;
+      diag.error(entries[*p.entry], at_path, p.message);
+      continue;
+    }
     auto it = key_nodes.find(p.key);
     const YAML::Node& at = it != key_nodes.end() ? it->second : node;
-    diag.error(at, join_path(path, p.key), p.message);
+    diag.error(at, at_path, p.message);
   }
   return params;
 }

@@ -138,7 +138,7 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
   for (const auto& key : schema.keys())
     keys.push_back(key);
   for (const char* key : {"boundary_conditions", "loads", "interface_gaps", "interfaces",
-                          "obstacle_displacements", "rigid_bodies", "control", "output_at"})
+                          "obstacle_displacements", "rigid_bodies", "control"})
     keys.push_back(key);
   const auto entries = list_entries(top, "stages", keys, expected);
   std::vector<InterfaceLawChangeSpec> active;
@@ -158,17 +158,6 @@ std::vector<StageSpec> read_stages(const YamlMap& top, const std::string& kinema
       read_obstacle_displacements(m, kinematics == "three_d" ? 3 : 2, st);
     if (m.has("interfaces")) read_stage_interfaces(m, interfaces, laws, active, st);
     if (m.has("control")) read_control(m, control, st);
-    if (m.reals("output_at", st.output_at) && m.has("output_at")) {
-      for (std::size_t k = 0; k < st.output_at.size(); ++k) {
-        const double f = st.output_at[k];
-        if (!(f > 0 && f <= 1))
-          m.error("output_at", "load factor " + std::to_string(f) +
-                                   " is out of range (0, 1] (fractions of the stage)");
-        else if (k > 0 && !(f > st.output_at[k - 1]))
-          m.error("output_at", "load factors must increase (" + std::to_string(f) + " follows " +
-                                   std::to_string(st.output_at[k - 1]) + ")");
-      }
-    }
     out.push_back(std::move(st));
   }
   return out;

@@ -21,6 +21,7 @@ struct Sample {
   bool verbose = false;
   std::string label = "a";
   Shape shape = Shape::Round;
+  std::vector<double> levels = {0.5, 1.0};
 };
 
 ParamSchemaOf<Sample> sample_schema() {
@@ -34,6 +35,10 @@ ParamSchemaOf<Sample> sample_schema() {
   s.boolean("verbose", &Sample::verbose, "flag").defaulted();
   s.string("label", &Sample::label, "free text").defaulted();
   s.choice("shape", &Sample::shape, {{"round", Shape::Round}, {"square", Shape::Square}}, "enum")
+      .defaulted();
+  s.real_list("levels", &Sample::levels, "m", "increasing, >= 0")
+      .non_negative()
+      .strictly_increasing()
       .defaulted();
   s.rule("ratio", "ratio <= 0.5 when shape is square", [](const Sample& p) {
     return p.shape == Shape::Square && p.ratio > 0.5
@@ -76,6 +81,7 @@ TEST(ParamBinding, FillsEveryMemberFromValidatedInput) {
   given.set("verbose", true);
   given.set("label", std::string("xyz"));
   given.set("shape", std::string("square"));
+  given.set("levels", std::vector<double>{0.0, 0.125, 3.5});
   ASSERT_TRUE(validate(schema, given).empty());
   const Sample p = *schema.fill(given);
   EXPECT_EQ(p.stiffness, 2.0);
@@ -89,6 +95,7 @@ TEST(ParamBinding, FillsEveryMemberFromValidatedInput) {
   EXPECT_TRUE(p.verbose);
   EXPECT_EQ(p.label, "xyz");
   EXPECT_EQ(p.shape, Shape::Square);
+  EXPECT_EQ(p.levels, (std::vector<double>{0.0, 0.125, 3.5}));
   // Written back, the struct gives the same values by key.
   EXPECT_EQ(schema.to_parameters(p).values(), given.values());
 }
@@ -104,6 +111,7 @@ TEST(ParamBinding, AbsentKeysTakeTheirDefaultsOrStayEmpty) {
   EXPECT_EQ(p.ratio, 0.25);
   EXPECT_EQ(p.count, 3);
   EXPECT_EQ(p.shape, Shape::Round);
+  EXPECT_EQ(p.levels, (std::vector<double>{0.5, 1.0}));
   EXPECT_FALSE(schema.to_parameters(p).has("cutoff"));
   // fill() also takes defaults a caller's set lacks (it does not validate again).
   ParameterSet bare;
@@ -151,6 +159,18 @@ TEST(ParamBinding, CodeLevelStructReportsWhatTheInputWould) {
   given.set("shape", std::string("square"));
   given.set("ratio", 0.75);
   EXPECT_EQ(input_error(given), code_error(square));
+
+  // A list member: each bad entry named by its index, the same from input and from code.
+  Sample unordered = good;
+  unordered.levels = {-1.0, 2.0, 2.0};
+  given = ParameterSet{};
+  given.set("stiffness", 1.0);
+  given.set("levels", unordered.levels);
+  EXPECT_EQ(input_error(given),
+            "sample.levels[0]: value -1 is out of range [0, inf) m\n"
+            "sample.levels[2]: value 2 does not exceed the entry before it (2): the entries "
+            "must increase");
+  EXPECT_EQ(code_error(unordered), input_error(given));
 }
 
 TEST(ParamBinding, MissingRequiredKeyMessage) {
@@ -202,6 +222,7 @@ TEST(ParamSchemaOf, DefaultedTakesTheMembersInitialValue) {
   EXPECT_EQ(std::get<bool>(default_of("verbose")), false);
   EXPECT_EQ(std::get<std::string>(default_of("label")), "a");
   EXPECT_EQ(std::get<std::string>(default_of("shape")), "round");
+  EXPECT_EQ(std::get<std::vector<double>>(default_of("levels")), (std::vector<double>{0.5, 1.0}));
   EXPECT_TRUE(s.find("stiffness")->required);
   ParamSchemaOf<Sample> other("other", "");
   EXPECT_THROW(other.real("cutoff", &Sample::cutoff, "kPa", "optional").defaulted(),

@@ -140,6 +140,94 @@ TEST(ParamSchema, OpenAndClosedBounds) {
   EXPECT_TRUE(spec.check(std::nan("")).has_value());
 }
 
+// A list of reals: the range applies to each entry, every bad entry is reported with its
+// index, order is checked for a strictly increasing key, and the key's summary says both.
+ParamSchema levels_schema() {
+  ParamSchema s("levels", "a list key");
+  s.real_list("at", "", "load factors")
+      .greater_than(0)
+      .at_most(1)
+      .strictly_increasing()
+      .because("fractions")
+      .with_default(std::vector<double>{});
+  s.real_list("free", "m", "any reals").optional();
+  return s;
+}
+
+std::vector<ParamProblem> list_problems(const ParamValue& at) {
+  ParameterSet p;
+  p.set("at", at);
+  return validate(levels_schema(), p);
+}
+
+TEST(ParamSchema, RealListChecksEachEntry) {
+  ParameterSet p;
+  p.set("at", std::vector<double>{0.25, 0.5, 1.0});
+  ASSERT_TRUE(validate(levels_schema(), p).empty());
+  EXPECT_EQ(p.real_list("at"), (std::vector<double>{0.25, 0.5, 1.0}));
+  EXPECT_FALSE(p.has("free"));
+  // An empty list: nothing to check, the same as the default.
+  EXPECT_TRUE(list_problems(std::vector<double>{}).empty());
+
+  // Out of range (both ends, open and closed) and out of order, each at its entry.
+  auto problems = list_problems(std::vector<double>{0.5, 0.0, 0.75, 0.75, 1.25, 1.0});
+  ASSERT_EQ(problems.size(), 4u);
+  EXPECT_EQ(problems[0].key, "at");
+  EXPECT_EQ(problems[0].entry, std::optional<std::size_t>(1));
+  EXPECT_EQ(problems[0].message, "value 0 is out of range (0, 1]: fractions");
+  EXPECT_EQ(problems[1].entry, std::optional<std::size_t>(3));
+  EXPECT_EQ(problems[1].message,
+            "value 0.75 does not exceed the entry before it (0.75): the entries must increase");
+  EXPECT_EQ(problems[2].entry, std::optional<std::size_t>(4));
+  EXPECT_EQ(problems[2].message, "value 1.25 is out of range (0, 1]: fractions");
+  EXPECT_EQ(problems[3].entry, std::optional<std::size_t>(5)); // 1 after 1.25: in range, but
+  EXPECT_EQ(problems[3].message,                               // not increasing
+            "value 1 does not exceed the entry before it (1.25): the entries must increase");
+  problems = list_problems(std::vector<double>{0.75, 0.5});
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].entry, std::optional<std::size_t>(1));
+  problems = list_problems(std::vector<double>{std::nan("")});
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].entry, std::optional<std::size_t>(0));
+
+  // A scalar where a list is expected, and a list where a real is.
+  problems = list_problems(0.5);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].message, "expected a list of reals, got 0.5");
+  EXPECT_FALSE(problems[0].entry.has_value());
+  ParameterSet q;
+  q.set("stiffness", std::vector<double>{1.0});
+  problems = validate(sample_schema(), q);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].message, "expected a real, got [1]");
+
+  // validate_or_throw names the entry.
+  ParameterSet r;
+  r.set("at", std::vector<double>{0.5, 2.0});
+  try {
+    validate_or_throw(levels_schema(), r);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.problems().size(), 1u);
+    EXPECT_EQ(e.problems()[0], "levels.at[1]: value 2 is out of range (0, 1]: fractions");
+  }
+}
+
+TEST(ParamSchema, RealListSummaryAndTable) {
+  const auto s = levels_schema();
+  EXPECT_EQ(s.find("at")->interval_text(), "(0, 1]");
+  EXPECT_EQ(s.find("at")->range_text(), "each in (0, 1], increasing");
+  EXPECT_EQ(s.find("at")->summary(),
+            "list of reals, default [], each in (0, 1], increasing: load factors");
+  EXPECT_EQ(s.find("free")->range_text(), "");
+  EXPECT_EQ(s.find("free")->summary(), "list of reals, optional, m: any reals");
+  EXPECT_NE(s.markdown_table().find(
+                "| `at` | list of reals | [] | each in (0, 1], increasing |  | load factors |"),
+            std::string::npos)
+      << s.markdown_table();
+  EXPECT_EQ(format_value(std::vector<double>{0.1, 0.5, 1.0}), "[0.1, 0.5, 1]");
+}
+
 struct Thing {
   virtual ~Thing() = default;
   double value = 0;

@@ -53,6 +53,10 @@ ParameterSet distinct_values(const ParamSchema& schema) {
       s.set(spec.name, back_is_default ? spec.choices.front() : spec.choices.back());
       break;
     }
+    case ParamType::RealList:
+      s.set(spec.name, std::vector<double>{0.125 * static_cast<double>(i),
+                                           0.5 + 0.25 * static_cast<double>(i)});
+      break;
     }
   }
   return s;

@@ -42,11 +42,12 @@ TEST(StageSchema, EveryKeyReachesItsMember) {
   const StageSpec a = read_stage("    increments: 7\n    duration: 2.5\n"
                                  "    reset_displacements: true\n    energy_tolerance: 0.25\n"
                                  "    control: {type: arc_length, arc_length: 0.003, "
-                                 "max_increments: 44}\n");
+                                 "max_increments: 44}\n    output_at: [0.125, 0.5, 1]\n");
   EXPECT_EQ(a.increments, 7);
   EXPECT_EQ(a.duration, 2.5);
   EXPECT_TRUE(a.reset_displacements);
   EXPECT_EQ(a.energy_tolerance, 0.25);
+  EXPECT_EQ(a.output_at, (std::vector<double>{0.125, 0.5, 1.0}));
   EXPECT_EQ(a.control.type, "arc_length");
   EXPECT_EQ(a.control.arc_length, std::optional<double>(0.003));
   EXPECT_EQ(a.control.max_increments, std::optional<int>(44));
@@ -67,6 +68,7 @@ TEST(StageSchema, EveryKeyReachesItsMember) {
   EXPECT_EQ(d.duration, defaults.duration);
   EXPECT_EQ(d.reset_displacements, defaults.reset_displacements);
   EXPECT_EQ(d.energy_tolerance, defaults.energy_tolerance);
+  EXPECT_TRUE(d.output_at.empty());
 
   const StageSpec none = read_stage("");
   EXPECT_EQ(none.control.type, "ramp");
@@ -122,6 +124,32 @@ TEST(StageSchema, BadValuesAreLocated) {
   // An unknown stage key is still the stage map's (with the schema's keys among the allowed).
   EXPECT_TRUE(has(reading_problems("    increment: 2\n"),
                   "in.yaml:19:5: stages[0].increment: unknown key (did you mean 'increments'?)"));
+}
+
+// `output_at` (a list of reals): each bad entry is reported at its own file:line:col as
+// output_at[i], with the range or the order it breaks; a list of the wrong kind at the key.
+TEST(StageSchema, OutputAtIsCheckedEntryByEntry) {
+  const std::string range = "is out of range (0, 1]: load factors are fractions of the stage";
+  auto p = reading_problems("    output_at: [0.25, 1.5, 0]\n");
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_TRUE(has(p, "in.yaml:19:23: stages[0].output_at[1]: value 1.5 " + range));
+  EXPECT_TRUE(has(p, "in.yaml:19:28: stages[0].output_at[2]: value 0 " + range));
+  // Block style: the entry's own line.
+  p = reading_problems("    output_at:\n      - 0.5\n      - 0.75\n      - 0.75\n");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_TRUE(has(p, "in.yaml:22:9: stages[0].output_at[2]: value 0.75 does not exceed the "
+                     "entry before it (0.75): the entries must increase"));
+  p = reading_problems("    output_at: [0.5, half, 1]\n");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_TRUE(has(p, "in.yaml:19:22: stages[0].output_at[1]: expected a real number, got "
+                     "'half'"));
+  p = reading_problems("    output_at: 0.5\n");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_TRUE(has(p, "in.yaml:19:5: stages[0].output_at: expected a list of real numbers, got "
+                     "'0.5'"));
+  // An empty list is the default: no stop of its own.
+  EXPECT_TRUE(read_stage("    output_at: []\n").output_at.empty());
+  EXPECT_TRUE(reading_problems("    output_at: []\n").empty());
 }
 
 // describe (and the docs' table) list the rules, so `bipot describe control` shows them.
