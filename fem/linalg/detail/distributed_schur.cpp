@@ -146,7 +146,6 @@ struct DistributedSchur::Impl {
     for (std::size_t i = 0; i < m; ++i)
       listvar[i] = static_cast<MUMPS_INT>(schur_dofs[i] + 1);
     redrhs.assign(m, 0.0);
-    rhs.clear(); // sized by reduce(): not held while MUMPS factorises
     // ICNTL(19) = 1: the Schur complement centralised on the host (rank 0), by rows (its
     // lower triangle for a symmetric matrix); the list of its variables is read on the host.
     id.size_schur = static_cast<MUMPS_INT>(m);
