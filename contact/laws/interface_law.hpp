@@ -8,6 +8,7 @@
 
 #include "contact/laws/coulomb_cone.hpp"
 
+#include <optional>
 #include <string>
 
 namespace bipot::contact {
@@ -56,6 +57,16 @@ public:
   /// Energy per area (kJ/m²) that adhesion loss can still dissipate from intensity β (0 for
   /// a law without adhesion), linear in β: what a dissipation-controlled step measures.
   virtual double adhesion_energy(double /*beta*/) const { return 0.0; }
+
+  /// The work −∫ a·dg (kJ/m²) done on the adhesive springs a = adhesive_traction(β, g) while
+  /// the jump goes from `from` to `to` in a straight line, β starting at `beta_old` and
+  /// following the law along the way; std::nullopt where the end states do not determine it
+  /// (a rate-dependent β) or the law does not know it. The energy ledger integrates the
+  /// springs' share of the external work by it (docs/energy_quadrature.md).
+  virtual std::optional<double> spring_work(double /*beta_old*/, const LocalVector& /*from*/,
+                                            const LocalVector& /*to*/) const {
+    return std::nullopt;
+  }
 };
 
 /// Converged values at one interface point at the end of the previous step.

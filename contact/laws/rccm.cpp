@@ -68,6 +68,41 @@ double Rccm::update_adhesion(double beta_old, const LocalVector& jump, double dt
   return beta;
 }
 
+std::optional<double> Rccm::spring_work(double beta_old, const LocalVector& from,
+                                        const LocalVector& to) const {
+  // With a viscosity β depends on how fast Ẽ rose within the step, which the ends do not say.
+  if (alpha_ > 0.0) return std::nullopt;
+  const Eigen::Index d = from.size();
+  const auto energy = [&](const LocalVector& g) {
+    const double g_n = std::max(g(0), 0.0);
+    return cn_ * g_n * g_n + ct_ * g.tail(d - 1).squaredNorm();
+  };
+  // ½ C_n ⟨g_n⟩₋²: the normal spring's energy in penetration, which does not drive β.
+  const auto compressed = [&](const LocalVector& g) {
+    const double g_n = std::min(g(0), 0.0);
+    return 0.5 * cn_ * g_n * g_n;
+  };
+  const double e0 = energy(from), e1 = energy(to);
+  if (e0 * beta_old > w_ * (1.0 + 1e-12)) return std::nullopt;
+  const double b0 = beta_old * beta_old;
+  const double dp = compressed(to) - compressed(from);
+  // Below the threshold β stays: a linear spring, the whole path's work from its ends.
+  if (e1 * beta_old <= w_) return 0.5 * b0 * (e1 - e0) + b0 * dp;
+  // Past Ẽ* = w/β_old, β = w/Ẽ and ½ β² dẼ = ½ w² dẼ/Ẽ² integrates to ½ w (β_old − β_1).
+  const double beta1 = w_ / e1;
+  const double springs = 0.5 * b0 * (w_ / beta_old - e0) + 0.5 * w_ * (beta_old - beta1);
+  if (dp == 0.0) return springs;
+  // The penetration's share: exact where the pair leaves it at β_old (Ẽ, convex along the
+  // segment, at most Ẽ* where g_n crosses 0), else, with g_n < 0 at the end (within the
+  // contact tolerance), by the trapezoid in β².
+  if (to(0) >= 0.0) {
+    const double s = from(0) / (from(0) - to(0));
+    if (ct_ * (from.tail(d - 1) + s * (to - from).tail(d - 1)).squaredNorm() * beta_old <= w_)
+      return springs + b0 * dp;
+  }
+  return springs + 0.5 * (b0 + beta1 * beta1) * dp;
+}
+
 LocalVector Rccm::adhesive_traction(double beta, const LocalVector& jump,
                                     LocalMatrix* dt_djump) const {
   const Eigen::Index d = jump.size();

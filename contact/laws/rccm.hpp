@@ -56,6 +56,15 @@ public:
   double friction_coefficient_dbeta(double) const override { return -mu_; }
   /// max(C_n, C_t).
   double stiffness_scale() const override;
+  /// Without viscosity (α = 0): β = min(β_old, w/max Ẽ) along the path, so the work
+  /// ∫ β² d(½ Ẽ) (+ the compressed normal spring's, Ẽ counting ⟨g_n⟩₊ only) depends on Ẽ's end
+  /// values alone wherever Ẽ rises while above the threshold w/β_old, as on any straight line
+  /// (Ẽ is convex): ½ β_old² (Ẽ* − Ẽ_0) + ½ w (β_old − w/Ẽ_1) past it, a kink the trapezoid
+  /// misses. The normal spring in penetration (⟨g_n⟩₋, within the contact tolerance) by the
+  /// trapezoid in β² where β may fall meanwhile. std::nullopt with a viscosity, or from a
+  /// state above the threshold (not on the law's branch, e.g. after a law change).
+  std::optional<double> spring_work(double beta_old, const LocalVector& from,
+                                    const LocalVector& to) const override;
 
   double normal_stiffness() const { return cn_; }     ///< C_n (kN/m³)
   double tangential_stiffness() const { return ct_; } ///< C_t (kN/m³)

@@ -1,9 +1,10 @@
 // InterfaceAssembler's share of the run's energy balance (fem/analysis/energy_ledger.hpp):
 // each work term is the trapezoidal rule over the increment, exact for elastic springs at
 // constant β, for friction at constant force and for unilateral contact. While β falls, the
-// springs' share of the external work is integrated by the ledger's three-point rule where
-// the pair's path is smooth (external_work_correction); what is left is that rule's error,
-// and the trapezoid's at kinks (docs/energy_quadrature.md).
+// springs' share of the external work is integrated exactly where the law can
+// (InterfaceLaw::spring_work, exact_work_correction), else by the ledger's three-point rule
+// where the pair's path is smooth (external_work_correction); what is left is that rule's
+// error, and the trapezoid's at kinks (docs/energy_quadrature.md).
 #include "contact/solver/interface_assembler.hpp"
 
 #include "contact/solver/adhesion_loss.hpp"
@@ -12,6 +13,7 @@
 #include "fem/core/error.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace bipot::contact {
 
@@ -74,6 +76,10 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
   // not all external, and the trapezoid stays for the stencil's steps.
   const bool moved = dshift != 0.0 || d_obstacle.squaredNorm() != 0.0;
   const bool three_point = energy.rule.three_point && !moved && smooth_states_ >= 3;
+  // A law that integrates its springs' work exactly along the pair's path (InterfaceLaw::
+  // spring_work: rate-independent adhesion) needs neither the rule nor a smooth stretch: its
+  // kinks are in the integral. Not across a jump, nor where the interference moved the jumps.
+  const bool exact_ok = energy.on_path && !moved && !law_->is_tied();
   smooth_states_ = moved ? 1 : std::min(smooth_states_ + 1, 3);
   for (std::size_t i = 0; i < accounted_.size(); ++i) {
     const double A = iface_.pairs[i].weight;
@@ -92,6 +98,9 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
     const double drive_old = old.beta > 0 ? -a_old.dot(old.jump) / old.beta : 0.0;
     const double drive_now = now.beta > 0 ? -a.dot(now.jump) / now.beta : 0.0;
     const AdhesionLoss loss = adhesion_loss(w, old.beta, drive_old, now.beta, drive_now);
+    const std::optional<double> exact =
+        exact_ok ? law_->spring_work(old.beta, old.jump, now.jump) : std::nullopt;
+    if (exact) energy.exact_work_correction += A * (*exact + 0.5 * (a_old + a).dot(dg));
     energy.adhesion_dissipation += A * loss.adhesion;
     energy.viscous_dissipation += A * loss.viscous;
     // A prescribed interference moves the normal jump without moving the bodies.
@@ -113,7 +122,7 @@ void InterfaceAssembler::record_energy(InterfaceEnergy& energy) {
       h.softening = now.beta < old.beta;
       h.regime_steps = old.regime_steps;
       energy.kinked = energy.kinked || spring_path(h) == SpringPath::Kinked;
-      energy.external_work_correction += A * spring_work_correction(energy.rule, h);
+      if (!exact) energy.external_work_correction += A * spring_work_correction(energy.rule, h);
     }
     old.prev_jump = old.jump;
     old.prev_adhesive = a_old;

@@ -62,8 +62,10 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
   for (const auto& ia : ifaces_) {
     InterfaceEnergy e;
     e.rule = rule;
+    e.on_path = !jump_;
     ia->record_energy(e);
     correction += e.external_work_correction;
+    totals_.external_work += e.exact_work_correction;
     kinked = kinked || e.kinked;
     totals_.interference_work += e.interference_work;
     totals_.interface_energy += e.stored;
@@ -72,6 +74,7 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
     totals_.contact_work += e.contact_work;
   }
   if (!kinked) totals_.external_work += correction;
+  jump_ = false;
 }
 
 EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector<double>& external,
@@ -79,6 +82,7 @@ EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector
   // record() and back: the interfaces update their accounts only through record_energy().
   const EnergyTotals totals = totals_;
   const double chord = last_chord_;
+  const bool jump = jump_;
   const std::vector<double> u_old = u_, external_old = external_, internal_old = internal_;
   std::vector<std::vector<double>> accounts;
   for (const auto& ia : ifaces_)
@@ -87,6 +91,7 @@ EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector
   const EnergyTotals out = totals_;
   totals_ = totals;
   last_chord_ = chord;
+  jump_ = jump;
   u_ = u_old;
   external_ = external_old;
   internal_ = internal_old;

@@ -59,6 +59,12 @@ public:
   /// The path is not known to be smooth from the last recorded state on (a stage starts, a
   /// jump): the next step is integrated by the trapezoidal rule.
   void break_path() { last_chord_ = 0; }
+  /// The next recorded step is a jump (the staggered fallback): no path joins its states, so
+  /// no rule, exact or not, can do better than the trapezoid; the path starts again after it.
+  void mark_jump() {
+    break_path();
+    jump_ = true;
+  }
   const EnergyTotals& totals() const { return totals_; }
   /// Its whole state for a checkpoint (energy_ledger_state.cpp): the totals, the last step's
   /// u and forces, its chord length, and every interface's account.
@@ -72,6 +78,8 @@ private:
   std::vector<double> u_, external_, internal_;
   /// ‖Δu‖ of the last recorded step; 0: the path starts again.
   double last_chord_ = 0;
+  /// mark_jump() was called since the last record().
+  bool jump_ = false;
 };
 
 } // namespace bipot

@@ -307,7 +307,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       reaction_all = std::move(reactions);
       reaction_scale = reaction.norm2();
       // The staggered fallback jumps: no smooth path joins its states to the ones before.
-      if (log.staggered > 0) energy->break_path();
+      if (log.staggered > 0) energy->mark_jump();
       energy->record(u, external, internal);
       if (log.staggered > 0) energy->break_path();
       energy_control.accept(energy_before, energy->totals(), energy_verdict);

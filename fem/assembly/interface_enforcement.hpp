@@ -60,6 +60,12 @@ struct InterfaceEnergy {
   /// stencil (then the ledger keeps the trapezoid for all).
   double external_work_correction = 0;
   bool kinked = false;
+  /// In: false where no path is known to join the step's states (a jump: the staggered
+  /// fallback, a displacement reset). Out: what integrals exact along the pairs' paths
+  /// (InterfaceLaw::spring_work) add to the trapezoidal external work on the adhesive
+  /// springs; kinks do not matter to them.
+  bool on_path = true;
+  double exact_work_correction = 0;
   double interference_work = 0;    ///< of gap shifts, moving obstacles and law changes
   double stored = 0;               ///< ½ β² (C_n g_n² + C_t ‖g_t‖²) A, now
   double adhesion_dissipation = 0; ///< w (β0 − β) A: adhesion lost

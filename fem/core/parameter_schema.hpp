@@ -97,6 +97,12 @@ public:
 
   const std::string& name() const { return name_; }
   const std::string& doc() const { return doc_; }
+  /// The same keys under another name: a law or material a project derives from a registered
+  /// one registers under a name of its own.
+  void rename(std::string name, std::string doc) {
+    name_ = std::move(name);
+    doc_ = std::move(doc);
+  }
   const std::vector<ParamSpec>& specs() const { return specs_; }
   std::vector<std::string> keys() const;
   const ParamSpec* find(const std::string& key) const;

@@ -9,8 +9,8 @@
 
 namespace bipot::test {
 
-inline Model model_from_text(const std::string& text, const std::string& file_name) {
-  const Catalogue catalogue = builtin_catalogue();
+inline Model model_from_text(const std::string& text, const std::string& file_name,
+                             const Catalogue& catalogue = builtin_catalogue()) {
   return build_model(read_problem_text(text, file_name, catalogue), catalogue);
 }
 

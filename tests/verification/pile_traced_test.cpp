@@ -162,69 +162,33 @@ TEST(PileTraced, NoTracedStepNeedsManyIterationsWhateverTheStepLength) {
   }
 }
 
-// The traced pull-out with `energy_tolerance: 1e-6` (on a coarser mesh than the shipped
-// input's, to keep the test short): the balance holds to 1e-6 of the work put in at every
-// pull-out step, which without the option it does not, and the shorter steps the control asks
-// for still pass through the ramp's equilibria (as in the first test: 1e-6 before the peak,
-// 1e-5 after it, solver tolerance 1e-10).
-TEST(PileTraced, EnergyToleranceHoldsTheBalanceAtEveryStep) {
+// The traced pull-out's energy balance, on a coarser mesh than the shipped input's to keep
+// the test short: with RCCM's springs' work in closed form along each step (Rccm::spring_work)
+// it holds at every pull-out step to round-off, without `energy_tolerance`. (The ledger's
+// quadrature alone left 3.5e-5 of the work put in on the shipped mesh, and the option needed
+// 2265 increments there to bring it within 1e-6.)
+TEST(PileTraced, BalanceHoldsAtEveryStep) {
   pile::PileSpec spec =
       pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) + "/inputs/pile_pullout/rccm_traced.yaml",
                            bipot::builtin_catalogue());
   spec.mesh.shaft_cells = 26;
   spec.mesh.soil_radial_cells = 15;
   spec.mesh.below_toe_cells = 10;
-  spec.pullout.max_increments = 20000;
-  const auto ramped = pull_out(spec, "ramp", 1e-10);
-  RunSummary off, on;
-  const auto uncontrolled = pull_out(spec, "dissipation", 1e-10, nullptr, &off);
-  spec.pullout.energy_tolerance = 1e-6;
-  const auto controlled = pull_out(spec, "dissipation", 1e-10, nullptr, &on);
-  const auto worst = [](const std::map<long long, Point>& run) {
-    double most = 0;
-    for (const auto& [key, p] : run)
-      most = std::max(most, p.energy_error);
-    return most;
-  };
-  std::printf("energy balance error / work put in, worst pull-out step: %.3g in %d increments "
-              "(%d linear solves) without energy_tolerance, %.3g in %d (%d linear solves, %d "
-              "halvings, %d flagged) with 1e-6\n",
-              worst(uncontrolled), off.steps, off.linear_solves, worst(controlled), on.steps,
-              on.linear_solves, on.energy_halvings, on.over_energy_budget);
-  EXPECT_GT(worst(uncontrolled), 1e-6);
-  EXPECT_LE(worst(controlled), 1e-6);
-  EXPECT_EQ(on.staggered_increments, 0);
-
-  // Compared: the ramp's planned levels before the first traced step (reached in the energy
-  // halvings' sub-increments where the bond starts to fail), and after the snap-back. Between
-  // them the traced run may come back to the ramp at a planned level on another branch than
-  // the ramp's (each pair's debonding is a small snap-back of its own): not compared.
-  double peak = 0, peak_at = 0;
-  int peak_order = 0, first_traced = 1 << 30;
-  for (const auto& [key, p] : controlled) {
-    if (p.force > peak) peak = p.force, peak_at = key * 1e-12, peak_order = p.order;
-    if (p.traced) first_traced = std::min(first_traced, p.order);
+  RunSummary summary;
+  const auto traced = pull_out(spec, "dissipation", 1e-10, nullptr, &summary);
+  double worst = 0;
+  int softening = 0;
+  for (const auto& [key, p] : traced) {
+    worst = std::max(worst, p.energy_error);
+    softening += p.traced ? 1 : 0;
   }
-  int before = 0, after = 0;
-  for (const auto& [key, r] : ramped) {
-    const auto it = controlled.find(key);
-    if (it == controlled.end()) continue;
-    const bool ramp_phase = it->second.order < first_traced;
-    if (!ramp_phase && (it->second.order < peak_order || key * 1e-12 < peak_at)) continue;
-    // Where the ramp was cut back and jumped (5.27 mm on this mesh: 224.30 kN) the shorter
-    // steps stay on the upper branch (227.62 kN) and trace down to the ramp's equilibrium
-    // (224.29 kN at 5.2718 mm) a few steps later.
-    if (r.unstable) continue;
-    ++(ramp_phase ? before : after);
-    EXPECT_NEAR(it->second.force, r.force, (ramp_phase ? 1e-6 : 1e-5) * std::abs(r.force))
-        << "head displacement " << key * 1e-9 << " mm";
-  }
-  std::printf("ramp: %d points compared before the first traced step, %d after the peak\n", before,
-              after);
-  EXPECT_GE(before, 10);
-  // The shorter dissipation steps stay traced to the end of the stage (adhesion left can
-  // still release a step's energy): the stage end, λ = 1, is the point after the peak.
-  EXPECT_GE(after, 1);
+  std::printf("energy balance error / work put in, worst of %zu pull-out steps (%d traced): "
+              "%.3g\n",
+              traced.size(), softening, worst);
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_GE(softening, 3);
+  EXPECT_EQ(summary.staggered_increments, 0);
+  EXPECT_EQ(summary.energy_halvings, 0);
 }
 
 } // namespace

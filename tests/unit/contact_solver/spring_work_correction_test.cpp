@@ -2,13 +2,16 @@
 // on the column's rate-independent RCCM pair (tests/support/bonded_column.hpp): β =
 // min(1, w/(C g²)), adhesive traction a = −β² C g, so the springs' work from g1 to g2 on the
 // softening branch is w²/(2C) (1/g1² − 1/g2²). On that branch the corrected trapezoid is the
-// three-point rule; where β starts falling within the stencil it is the trapezoid.
+// three-point rule; where β starts falling within the stencil it is the trapezoid. The law is
+// RCCM without its closed form of that work (test::RccmByRule), which the account otherwise
+// takes instead of the rule: exact along the whole path (last test).
 #include "contact/laws/rccm.hpp"
 #include "contact/solver/interface_assembler.hpp"
 #include "contact/solver/spring_work_correction.hpp"
 #include "fem/linalg/dof_distribution.hpp"
 
 #include "fem/core/interface_point.hpp"
+#include "tests/support/rccm_by_rule.hpp"
 
 #include <gtest/gtest.h>
 
@@ -139,8 +142,11 @@ struct OpeningRun {
 
 // n steps; with `old_checkpoint_at` > 0 the account is saved after that step, cut to the
 // layout before the rule and loaded back.
-OpeningRun open_pair(int n, int old_checkpoint_at = 0) {
-  Rccm law(Rccm::Parameters{C, C, w, 0.0});
+OpeningRun open_pair(int n, int old_checkpoint_at = 0, bool closed_form = false) {
+  const Rccm::Parameters parameters{C, C, w, 0.0};
+  const Rccm rccm(parameters);
+  const test::RccmByRule by_rule(parameters);
+  const InterfaceLaw& law = closed_form ? static_cast<const InterfaceLaw&>(rccm) : by_rule;
   Interface iface;
   iface.name = "bond";
   InterfacePair pair;
@@ -170,6 +176,7 @@ OpeningRun open_pair(int n, int old_checkpoint_at = 0) {
     ia.record_energy(e);
     EXPECT_FALSE(e.kinked && e.external_work_correction != 0.0);
     if (!e.kinked) correction += e.external_work_correction;
+    correction += e.exact_work_correction;
     if (e.external_work_correction != 0.0) ++run.corrected;
     ia.commit();
     if (k == old_checkpoint_at) {
@@ -209,6 +216,20 @@ TEST(SpringWorkCorrection, AnAccountWithoutStencilLoadsAndTheRuleRestarts) {
   EXPECT_EQ(restarted.corrected, whole.corrected - (regime_steps_needed - 1));
   EXPECT_NEAR(restarted.trapezoid_error, whole.trapezoid_error, 1e-15);
   EXPECT_LT(std::abs(restarted.error), 0.5 * std::abs(restarted.trapezoid_error));
+}
+
+// RCCM's own closed form (Rccm::spring_work) integrates the springs' work exactly along the
+// whole opening, the onset included and from the first step: the account is exact to
+// round-off at any step length, and the rule is never needed.
+TEST(SpringWorkCorrection, TheLawsClosedFormMakesTheAccountExact) {
+  for (int n : {7, 50}) {
+    const OpeningRun run = open_pair(n, 0, true);
+    std::printf("opening to 2.5 g* in %d steps: error %.3g with the closed form, trapezoid %.3g\n",
+                n, run.error, run.trapezoid_error);
+    EXPECT_LT(std::abs(run.error), 1e-14 * w) << n << " steps";
+    EXPECT_GT(std::abs(run.trapezoid_error), 1e-5 * w) << n << " steps";
+    EXPECT_EQ(run.corrected, 0) << "the rule's corrections are not used";
+  }
 }
 
 } // namespace
