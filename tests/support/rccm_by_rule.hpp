@@ -23,8 +23,7 @@ public:
   explicit RccmByRule(const Parameters& p) : Rccm(p) {}
   explicit RccmByRule(Checked<Parameters> p) : Rccm(std::move(p)) {}
   std::string name() const override { return "rccm_by_rule"; }
-  std::optional<double> spring_work(double, const LocalVector&,
-                                    const LocalVector&) const override {
+  std::optional<double> spring_work(double, const LocalVector&, const LocalVector&) const override {
     return std::nullopt;
   }
 };

@@ -65,8 +65,8 @@ TEST(RccmSpringWork, MatchesTheIntegratedPathAndClosesTheBalance) {
     ASSERT_TRUE(exact.has_value()) << s.what;
     const double integrated = midpoint_work(rccm, beta_old, s.from, s.to);
     const double beta_new = rccm.update_adhesion(beta_old, s.to, 0.0);
-    const double balance = stored(rccm, beta_new, s.to) - stored(rccm, beta_old, s.from) +
-                           kW * (beta_old - beta_new);
+    const double balance =
+        stored(rccm, beta_new, s.to) - stored(rccm, beta_old, s.from) + kW * (beta_old - beta_new);
     std::printf("%-26s β %.4f → %.4f: closed form %.12e, integrated %.12e kJ/m²\n", s.what,
                 beta_old, beta_new, *exact, integrated);
     // The midpoint sums' error across the kink is O(n⁻²) of the step's work scale.
@@ -89,8 +89,8 @@ TEST(RccmSpringWork, ViscousOrOffTheBranchIsLeftToTheQuadrature) {
   const LocalVector from = vec({1e-4, 0.0}), to = vec({6e-4, 0.0});
   const double beta_new = rccm.update_adhesion(1.0, to, 0.0);
   const double trapezoid =
-      -0.5 * (rccm.adhesive_traction(1.0, from) + rccm.adhesive_traction(beta_new, to))
-                 .dot(to - from);
+      -0.5 *
+      (rccm.adhesive_traction(1.0, from) + rccm.adhesive_traction(beta_new, to)).dot(to - from);
   EXPECT_GT(std::abs(trapezoid - *rccm.spring_work(1.0, from, to)),
             0.1 * *rccm.spring_work(1.0, from, to));
 }
