@@ -27,7 +27,8 @@ EnergyLedger::EnergyLedger(const std::vector<std::unique_ptr<InterfaceEnforcemen
 }
 
 void EnergyLedger::record(const std::vector<double>& u, const std::vector<double>& external,
-                          const std::vector<double>& internal) {
+                          const std::vector<double>& internal, bool jump) {
+  if (jump) break_path();
   if (u_.empty()) {
     u_.assign(u.size(), 0.0);
     external_.assign(u.size(), 0.0);
@@ -62,7 +63,7 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
   for (const auto& ia : ifaces_) {
     InterfaceEnergy e;
     e.rule = rule;
-    e.on_path = !jump_;
+    e.on_path = !jump;
     ia->record_energy(e);
     correction += e.external_work_correction;
     totals_.external_work += e.exact_work_correction;
@@ -74,24 +75,22 @@ void EnergyLedger::record(const std::vector<double>& u, const std::vector<double
     totals_.contact_work += e.contact_work;
   }
   if (!kinked) totals_.external_work += correction;
-  jump_ = false;
+  if (jump) break_path();
 }
 
 EnergyTotals EnergyLedger::trial(const std::vector<double>& u, const std::vector<double>& external,
-                                 const std::vector<double>& internal) {
+                                 const std::vector<double>& internal, bool jump) {
   // record() and back: the interfaces update their accounts only through record_energy().
   const EnergyTotals totals = totals_;
   const double chord = last_chord_;
-  const bool jump = jump_;
   const std::vector<double> u_old = u_, external_old = external_, internal_old = internal_;
   std::vector<std::vector<double>> accounts;
   for (const auto& ia : ifaces_)
     accounts.push_back(ia->save_energy_account());
-  record(u, external, internal);
+  record(u, external, internal, jump);
   const EnergyTotals out = totals_;
   totals_ = totals;
   last_chord_ = chord;
-  jump_ = jump;
   u_ = u_old;
   external_ = external_old;
   internal_ = internal_old;

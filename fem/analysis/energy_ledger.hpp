@@ -45,26 +45,22 @@ public:
   explicit EnergyLedger(const std::vector<std::unique_ptr<InterfaceEnforcement>>& ifaces);
 
   /// After a converged increment, before the interfaces commit: u (all DOFs), the external
-  /// forces (loads + reactions) and the internal forces at u, all replicated.
+  /// forces (loads + reactions) and the internal forces at u, all replicated. `jump`: the
+  /// increment jumped (the staggered fallback), so no path joins its states and no rule,
+  /// exact or not, does better than the trapezoid; the path starts again after it.
   void record(const std::vector<double>& u, const std::vector<double>& external,
-              const std::vector<double>& internal);
+              const std::vector<double>& internal, bool jump = false);
   /// The totals record() would make of the same arguments, with the ledger and the
   /// interfaces' accounts left as they were: an increment is judged on its energy before it
   /// is committed (EnergyStepControl) and recorded only if it is kept.
   EnergyTotals trial(const std::vector<double>& u, const std::vector<double>& external,
-                     const std::vector<double>& internal);
+                     const std::vector<double>& internal, bool jump = false);
   /// The displacements were reset to zero with the stresses kept (geostatic stage); the path
   /// starts again (break_path()).
   void reset_displacements();
   /// The path is not known to be smooth from the last recorded state on (a stage starts, a
   /// jump): the next step is integrated by the trapezoidal rule.
   void break_path() { last_chord_ = 0; }
-  /// The next recorded step is a jump (the staggered fallback): no path joins its states, so
-  /// no rule, exact or not, can do better than the trapezoid; the path starts again after it.
-  void mark_jump() {
-    break_path();
-    jump_ = true;
-  }
   const EnergyTotals& totals() const { return totals_; }
   /// Its whole state for a checkpoint (energy_ledger_state.cpp): the totals, the last step's
   /// u and forces, its chord length, and every interface's account.
@@ -78,8 +74,6 @@ private:
   std::vector<double> u_, external_, internal_;
   /// ‖Δu‖ of the last recorded step; 0: the path starts again.
   double last_chord_ = 0;
-  /// mark_jump() was called since the last record().
-  bool jump_ = false;
 };
 
 } // namespace bipot

@@ -278,11 +278,14 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         external[d] += reactions[d];
       // The stage's energy_tolerance: an increment whose balance breaks the budget is redone
       // in halves before anything of it is committed.
+      // The staggered fallback jumps: no smooth path joins its states to the ones before.
+      const bool jumped = log.staggered > 0;
       auto energy_verdict = EnergyStepControl::Verdict::Accept;
       const EnergyTotals energy_before = energy->totals();
       if (energy_control.active()) {
-        energy_verdict = energy_control.judge(energy_before, energy->trial(u, external, internal),
-                                              level < max_cutbacks && !energy_last_resort);
+        energy_verdict =
+            energy_control.judge(energy_before, energy->trial(u, external, internal, jumped),
+                                 level < max_cutbacks && !energy_last_resort);
         if (energy_verdict == EnergyStepControl::Verdict::Halve) {
           u = u_begin;
           matrix_ready = false;
@@ -306,10 +309,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       solid.commit();
       reaction_all = std::move(reactions);
       reaction_scale = reaction.norm2();
-      // The staggered fallback jumps: no smooth path joins its states to the ones before.
-      if (log.staggered > 0) energy->mark_jump();
-      energy->record(u, external, internal);
-      if (log.staggered > 0) energy->break_path();
+      energy->record(u, external, internal, jumped);
       energy_control.accept(energy_before, energy->totals(), energy_verdict);
       // A step the energy budget shortened, or one whose error leaves no room for a longer
       // one (traced steps grow by 1.5, the ramp by 2), does not grow.
