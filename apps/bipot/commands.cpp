@@ -176,6 +176,8 @@ int run_command(const std::vector<std::string>& args, const Catalogue& catalogue
                   summary.matrix_setups, summary.seconds, summary.assembly_seconds,
                   summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mib);
       std::cout << app::stepping_summary(summary, "bipot") << "\n";
+      if (const std::string e = app::energy_balance_summary(summary, "bipot"); !e.empty())
+        std::cout << e << "\n";
       std::cout << "bipot: results in " << folder.directory()
                 << " (ParaView: " << folder.directory() << "/solution.pvd)\n";
     }

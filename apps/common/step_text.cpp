@@ -83,4 +83,21 @@ std::string stepping_summary(const RunSummary& s, const std::string& program) {
          " in failed attempts" + energy_summary(s);
 }
 
+std::string energy_balance_summary(const RunSummary& s, const std::string& program) {
+  if (s.worst_balance_step == 0) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2g", s.worst_balance_error);
+  std::string out = program + ": energy balance: worst error " + text +
+                    " of the work put in (stage " + s.worst_balance_stage + ", step " +
+                    std::to_string(s.worst_balance_step) + "; energy.csv)";
+  // A linear bulk with bonded, frictional or rate-independent RCCM interfaces holds it to
+  // round-off: a larger error is the steps' discretisation of what the ledger integrates by
+  // quadrature.
+  if (s.worst_balance_error > 1e-6)
+    out += "; that is the steps' error on what the balance integrates by quadrature (viscous "
+           "adhesion, a nonlinear bulk, a law without a closed form): shorter steps or a "
+           "stage's energy_tolerance reduce it (docs/energy_quadrature.md)";
+  return out;
+}
+
 } // namespace bipot::app

@@ -19,4 +19,8 @@ std::string step_flags(const StepReport& r);
 /// 1 jump; 0.52 s in failed attempts".
 std::string stepping_summary(const RunSummary& s, const std::string& program);
 
+/// "<program>: energy balance: worst error 9.5e-04 of the work put in (stage pullout, step 80;
+/// energy.csv)", and above 1e-6 what makes it and what holds it; "" for a run with no step.
+std::string energy_balance_summary(const RunSummary& s, const std::string& program);
+
 } // namespace bipot::app

@@ -128,6 +128,8 @@ int run(const std::string& file, const std::string& output, const std::string& r
               summary.matrix_setups, summary.seconds, summary.assembly_seconds,
               summary.setup_seconds, summary.solve_seconds, summary.output_seconds, peak_mib);
   std::cout << app::stepping_summary(summary, "pile_pullout") << "\n";
+  if (const std::string e = app::energy_balance_summary(summary, "pile_pullout"); !e.empty())
+    std::cout << e << "\n";
   // List what is there: a bonded shaft has no profiles to plot.
   const std::string& dir = folder.directory();
   std::string files = "head_force.csv, profiles.csv";

@@ -110,6 +110,11 @@ struct RunSummary {
   double worst_controlled_energy_error = 0;
   /// The same with every error counted (energy.csv's largest relative_error in those stages).
   double worst_energy_error = 0;
+  /// energy.csv's largest |relative_error| over the whole run, every stage, and the stage
+  /// and step where it was (step 0: none).
+  double worst_balance_error = 0;
+  std::string worst_balance_stage;
+  int worst_balance_step = 0;
   double failed_seconds = 0; ///< wall time of the failed attempts
   Index num_dofs = 0;
   double seconds = 0;          ///< whole run, wall time

@@ -34,6 +34,27 @@ TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
   EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
 }
 
+// Every run closes with its energy balance's worst error and where it was; above 1e-6 it says
+// what makes such an error and what reduces it.
+TEST(EnergyBalanceSummary, NamesTheWorstStepAndAdvisesAboveOneInAMillion) {
+  RunSummary s;
+  EXPECT_EQ(energy_balance_summary(s, "app"), "") << "no step, nothing to say";
+  s.worst_balance_error = 9.54e-4;
+  s.worst_balance_stage = "pullout";
+  s.worst_balance_step = 80;
+  const std::string large = energy_balance_summary(s, "app");
+  EXPECT_EQ(large.rfind("app: energy balance: worst error 0.00095 of the work put in (stage "
+                        "pullout, step 80; energy.csv); ",
+                        0),
+            0u)
+      << large;
+  EXPECT_NE(large.find("energy_tolerance"), std::string::npos) << large;
+  s.worst_balance_error = 6.1e-15;
+  EXPECT_EQ(energy_balance_summary(s, "app"),
+            "app: energy balance: worst error 6.1e-15 of the work put in (stage pullout, step "
+            "80; energy.csv)");
+}
+
 // A progress line says how short the step was and how much of that the energy budget asked
 // for: a convergence cut-back alone, the energy alone, or both.
 TEST(StepFlags, TellEnergyHalvingsFromCutBacks) {
