@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bipot {
@@ -175,6 +176,51 @@ TEST(MohrCoulomb, TangentAtEqualTrialPrincipalStresses) {
     m.update(strain, sigma0, nullptr, s, D, nullptr);
     const VoigtMatrix fd = test::fd_tangent(m, strain, sigma0, nullptr, 1e-9);
     EXPECT_LT(test::relative_difference(D, fd, m.elasticity_matrix(6)), 1e-6) << D << "\n\n" << fd;
+  }
+}
+
+// Issue 12: the Mohr-Coulomb pile (rccm_mohr_coulomb.yaml: c = 5 kPa, phi = 34.8 deg,
+// psi = 5 deg) stalls at tolerance 1e-8 while one surface soil point switches between the
+// left edge (sigma1 = hoop = sigma2) and the main plane from one outer iteration to the next.
+// Its state there (axisymmetric strain [rr, zz, hoop, rz], geostatic sigma0 and plastic
+// strain, from a trace of the stalled increment) and the strain direction of the Newton
+// step, along which the return switches EdgeLeft -> Plane. A stress jump there the size of
+// the stalled residual (2.6e-3 kN at a node) would be of order 1e-2 kPa (estimated from the
+// cell size); the return is Lipschitz down to strain steps of 1e-13 (below, the 1e-10
+// relative admissibility tolerance shows: ~4e-10 kPa). The stall is not a discontinuity
+// (docs/performance_plasticity.md).
+TEST(MohrCoulomb, ContinuousWhereThePileStalled) {
+  const MohrCoulomb m({3.0e4, 0.33, 5.0, 34.8, 5.0});
+  Voigt eps0(4), dir(4), sigma0(4);
+  eps0 << -1.4626806408e-03, -3.2457062046e-04, 2.3121322861e-03, -2.6691470588e-03;
+  dir << -1.4476814452e-06, -2.1418127694e-05, 3.9350395347e-06, 1.3909474674e-04;
+  sigma0 << -0.645, -1.5, -0.645, 0.0;
+  Voigt plastic(4); // ElastoPlastic's state: plastic strain, then eq. plastic strain 2.69e-3
+  plastic << -1.3666958053e-03, -2.4637839454e-04, 2.0370679107e-03, -2.1864753755e-03;
+  double state[ElastoPlastic::state_size] = {0, 0, 0, 0, 0, 0, 2.6883995255e-03, 0, 1};
+  std::copy(plastic.data(), plastic.data() + 4, state);
+  const VoigtMatrix D = m.elasticity_matrix(4);
+  const auto branch = [&](const Voigt& e) {
+    return m.return_stress(stress_tensor(sigma0 + D * (e - plastic)), 0.0).branch;
+  };
+  // Bisect for the switch along the Newton step (it is at about 0.0094 of the step).
+  double a = 0.0, b = 0.02;
+  ASSERT_EQ(branch(eps0), MohrCoulomb::EdgeLeft);
+  ASSERT_EQ(branch(eps0 + b * dir), MohrCoulomb::Plane);
+  for (int k = 0; k < 60; ++k)
+    (branch(eps0 + 0.5 * (a + b) * dir) == MohrCoulomb::EdgeLeft ? a : b) = 0.5 * (a + b);
+  const Voigt at = eps0 + a * dir, s = test::stress_at(m, at, sigma0, state);
+  // Directions spread over the 4 components; |d sigma| <= 2 max|D| |d eps| + round-off.
+  const double bound = 2 * D.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 200; ++k) {
+    Voigt d(4);
+    for (int i = 0; i < 4; ++i)
+      d(i) = std::sin(1.7 * k + 2.3 * i + 0.4);
+    d.normalize();
+    for (double h = 1e-9; h > 0.9e-13; h *= 0.1) {
+      const double jump = (test::stress_at(m, at + h * d, sigma0, state) - s).norm();
+      EXPECT_LE(jump, bound * h + 1e-9) << "direction " << k << ", step " << h;
+    }
   }
 }
 
