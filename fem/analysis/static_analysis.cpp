@@ -335,7 +335,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.energy_halvings = energy_halvings;
       rep.over_energy_budget = energy_verdict == EnergyStepControl::Verdict::OverBudget;
       if (rep.over_energy_budget) ++summary.over_energy_budget;
-      if (std::abs(rep.energy.relative_error()) > summary.worst_balance_error) {
+      if (summary.worst_balance_step == 0 ||
+          std::abs(rep.energy.relative_error()) > summary.worst_balance_error) {
         summary.worst_balance_error = std::abs(rep.energy.relative_error());
         summary.worst_balance_stage = rep.stage;
         summary.worst_balance_step = rep.step;
