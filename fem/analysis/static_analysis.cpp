@@ -276,10 +276,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       std::vector<double> external = F_step.gather_all();
       for (std::size_t d = 0; d < external.size(); ++d)
         external[d] += reactions[d];
-      // The stage's energy_tolerance: an increment whose balance breaks the budget is redone
-      // in halves before anything of it is committed.
       // The staggered fallback jumps: no smooth path joins its states to the ones before.
       const bool jumped = log.staggered > 0;
+      // The stage's energy_tolerance: an increment whose balance breaks the budget is redone
+      // in halves before anything of it is committed.
       auto energy_verdict = EnergyStepControl::Verdict::Accept;
       const EnergyTotals energy_before = energy->totals();
       if (energy_control.active()) {
