@@ -150,12 +150,16 @@ Model build_model(const ProblemSpec& spec, const Registry<Material>& materials,
   std::vector<bool> region_used(max_id + 1, false);
   for (int r : mesh.cell_regions)
     region_used[r] = true;
-  for (const auto& [name, id] : mesh.regions)
-    if (region_used[id] && !model.material_of_region[id] &&
+  // A named pair, not a structured binding: C++17 lambdas may not capture bindings, which
+  // clang (the fuzzing build, scripts/fuzz.sh) refuses.
+  for (const auto& region : mesh.regions) {
+    const std::string& name = region.first;
+    if (region_used[region.second] && !model.material_of_region[region.second] &&
         std::none_of(spec.materials.begin(), spec.materials.end(),
                      [&](const MaterialSpec& m) { return m.region == name; }))
       problems.push_back(spec.file + ": materials: region '" + name +
                          "' of the mesh has no material");
+  }
 
   // Sets named by stages.
   std::vector<std::string> facet_names;
