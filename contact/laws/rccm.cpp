@@ -40,12 +40,17 @@ Rccm::Rccm(Checked<Parameters> p)
     : cn_(p->normal_stiffness), ct_(p->tangential_stiffness), w_(p->decohesion_energy),
       mu_(p->friction_coefficient), alpha_(p->adhesion_viscosity), beta0_(p->initial_adhesion) {}
 
+double Rccm::driving_energy(const LocalVector& jump) const {
+  const double g_n_plus = std::max(jump(0), 0.0);
+  return cn_ * g_n_plus * g_n_plus + ct_ * jump.tail(jump.size() - 1).squaredNorm();
+}
+
 double Rccm::update_adhesion(double beta_old, const LocalVector& jump, double dtau,
                              LocalVector* dbeta_djump) const {
   const Eigen::Index d = jump.size();
   assert((d == 2 || d == 3) && beta_old >= 0.0 && beta_old <= 1.0 && dtau >= 0.0);
   const double g_n_plus = std::max(jump(0), 0.0);
-  const double energy = cn_ * g_n_plus * g_n_plus + ct_ * jump.tail(d - 1).squaredNorm();
+  const double energy = driving_energy(jump);
   if (dbeta_djump) *dbeta_djump = LocalVector::Zero(d);
 
   double beta = beta_old;
@@ -73,16 +78,12 @@ std::optional<double> Rccm::spring_work(double beta_old, const LocalVector& from
   // With a viscosity β depends on how fast Ẽ rose within the step, which the ends do not say.
   if (alpha_ > 0.0) return std::nullopt;
   const Eigen::Index d = from.size();
-  const auto energy = [&](const LocalVector& g) {
-    const double g_n = std::max(g(0), 0.0);
-    return cn_ * g_n * g_n + ct_ * g.tail(d - 1).squaredNorm();
-  };
   // ½ C_n ⟨g_n⟩₋²: the normal spring's energy in penetration, which does not drive β.
   const auto compressed = [&](const LocalVector& g) {
     const double g_n = std::min(g(0), 0.0);
     return 0.5 * cn_ * g_n * g_n;
   };
-  const double e0 = energy(from), e1 = energy(to);
+  const double e0 = driving_energy(from), e1 = driving_energy(to);
   if (e0 * beta_old > w_ * (1.0 + 1e-12)) return std::nullopt;
   const double b0 = beta_old * beta_old;
   const double dp = compressed(to) - compressed(from);

@@ -74,6 +74,9 @@ public:
   double adhesion_viscosity() const { return alpha_; } ///< α (kN·s/m)
 
 private:
+  /// Ẽ = C_n ⟨g_n⟩₊² + C_t ‖g_t‖², the energy that drives β down.
+  double driving_energy(const LocalVector& jump) const;
+
   double cn_, ct_, w_, mu_, alpha_, beta0_;
 };
 
