@@ -5,7 +5,7 @@
 
 namespace bipot::contact {
 
-ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar) {
+ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar, ConeTie tie) {
   const Eigen::Index d = tau.size();
   assert((d == 2 || d == 3) && mu_bar >= 0.0);
   const double tau_n = tau(0);
@@ -13,9 +13,13 @@ ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar) {
 
   ConeProjection out;
   out.dr_dmu = LocalVector::Zero(d);
+  out.tie =
+      tau_n > 0.0 && mu_bar > 0.0 && std::abs(s - mu_bar * tau_n) <= cone_tie_band * mu_bar * tau_n;
+  const bool stick = out.tie && tie != ConeTie::ByValue ? tie == ConeTie::Stick
+                                                        : tau_n >= 0.0 && s <= mu_bar * tau_n;
   // Stick first: with μ̄ = 0 and τ_t = 0 both stick and separation tests can hold at τ_n = 0;
   // either gives r = τ = 0, and τ_n ≥ 0 keeps a negative τ_n out of the (degenerate) cone.
-  if (tau_n >= 0.0 && s <= mu_bar * tau_n) {
+  if (stick) {
     out.r = tau;
     out.status = ContactStatus::Stick;
     out.dr_dtau = LocalMatrix::Identity(d, d);

@@ -18,12 +18,21 @@ using bipot::LocalMatrix;
 using bipot::LocalVector;
 using bipot::to_string;
 
+/// Which element of the generalized Jacobian project_onto_cone() takes where τ is on the
+/// stick/slip boundary to within round-off (|‖τ_t‖ − μ̄ τ_n| ≤ cone_tie_band μ̄ τ_n, τ_n > 0,
+/// μ̄ > 0). Both branches give the same r there, and either Jacobian is an element of the
+/// generalized one; which is right for the coming Newton step depends on its direction.
+/// ByValue: the tests below decide, i.e. the last bits of τ.
+enum class ConeTie { ByValue, Stick, Slip };
+constexpr double cone_tie_band = 1e-12;
+
 /// Result of project_onto_cone().
 struct ConeProjection {
   LocalVector r;                              ///< Proj_{K_μ̄}(τ), same units as τ
   ContactStatus status = ContactStatus::Open; ///< the branch taken
   LocalMatrix dr_dtau; ///< an element of the generalized (Clarke) Jacobian ∂r/∂τ
   LocalVector dr_dmu;  ///< ∂r/∂μ̄ in the same branch
+  bool tie = false;    ///< τ within cone_tie_band of the stick/slip boundary (ConeTie)
 };
 
 /// Euclidean projection of τ = (τ_n, τ_t) onto K_μ̄ = {(r_n, r_t) : ‖r_t‖ ≤ μ̄ r_n}, μ̄ ≥ 0:
@@ -38,8 +47,10 @@ struct ConeProjection {
 /// the order listed, so the Jacobian returned is the one-sided limit from that branch (I on
 /// the stick/slip boundary and at the apex, 0 on the separation/slip boundary), which is an
 /// element of the Clarke generalized Jacobian. No division by ‖τ_t‖ happens unless the slip
-/// branch is taken, where ‖τ_t‖ > 0 is guaranteed.
-ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar);
+/// branch is taken, where ‖τ_t‖ > 0 is guaranteed. At a tie, `tie` other than ByValue picks
+/// the branch instead.
+ConeProjection project_onto_cone(const LocalVector& tau, double mu_bar,
+                                 ConeTie tie = ConeTie::ByValue);
 
 /// Derivatives of bipotential_predictor() (τ is also linear in r: ∂τ/∂r = I).
 struct PredictorDerivatives {

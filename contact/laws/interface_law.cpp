@@ -53,7 +53,7 @@ InterfaceResponse evaluate_tie(const InterfaceState& old, const LocalVector& jum
 
 InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
                            const LocalVector& jump, const LocalVector& r, double dtau, double rho,
-                           InterfaceResponseDerivatives* derivatives) {
+                           InterfaceResponseDerivatives* derivatives, ConeTie tie) {
   const Eigen::Index d = jump.size();
   assert((d == 2 || d == 3) && r.size() == d && old.jump.size() == d);
   if (law.is_tied()) return evaluate_tie(old, jump, r, rho, derivatives);
@@ -66,9 +66,10 @@ InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
   PredictorDerivatives dpred;
   out.tau =
       bipotential_predictor(r, jump(0), slip_inc, out.mu_bar, rho, derivatives ? &dpred : nullptr);
-  const ConeProjection proj = project_onto_cone(out.tau, out.mu_bar);
+  const ConeProjection proj = project_onto_cone(out.tau, out.mu_bar, tie);
   out.r = proj.r;
   out.status = proj.status;
+  out.tie = proj.tie;
   LocalMatrix da_djump;
   out.traction = out.r + law.adhesive_traction(out.beta, jump, derivatives ? &da_djump : nullptr);
 

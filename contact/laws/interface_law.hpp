@@ -87,6 +87,7 @@ struct InterfaceResponse {
   LocalVector r;        ///< Proj_{K_μ̄}(τ) (kPa)
   LocalVector traction; ///< total traction t = r + adhesive_traction(β, jump) (kPa)
   ContactStatus status = ContactStatus::Open;
+  bool tie = false; ///< τ on the stick/slip boundary to within round-off (ConeTie)
 };
 
 /// Derivatives of evaluate() for a semi-smooth Newton solver (generalized Jacobians).
@@ -105,10 +106,12 @@ struct InterfaceResponseDerivatives {
 ///   r_new = Proj_{K_μ̄}(τ),  t = r_new − β²(C_n g_n n + C_t g_t).
 /// `dtau` is the pseudo-time step (s), `rho` > 0 the augmentation parameter (kPa/m). Its fixed
 /// points r_new = r are exactly the solutions of the interface law. Fills `derivatives` when
-/// non-null. A tied law gives evaluate_tie().
+/// non-null; `tie` picks the branch where τ is on the stick/slip boundary to within round-off
+/// (project_onto_cone()). A tied law gives evaluate_tie().
 InterfaceResponse evaluate(const InterfaceLaw& law, const InterfaceState& old,
                            const LocalVector& jump, const LocalVector& r, double dtau, double rho,
-                           InterfaceResponseDerivatives* derivatives = nullptr);
+                           InterfaceResponseDerivatives* derivatives = nullptr,
+                           ConeTie tie = ConeTie::ByValue);
 
 /// The map of a tied law (perfect bonding) on a split pair: the augmented Lagrangian of the
 /// equality jump = old.jump (docs/theory.md, "Interface changes between stages"),

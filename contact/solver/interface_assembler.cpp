@@ -90,8 +90,22 @@ void InterfaceAssembler::set_augmentation(const std::vector<double>& diagonal_al
 }
 
 void InterfaceAssembler::begin_increment(double extrapolation) {
+  tie_hint_.clear();
+  predicted_ = extrapolation != 0.0;
   for (std::size_t i = 0; i < multiplier_.size(); ++i)
     multiplier_[i] = committed_[i].r + extrapolation * (committed_[i].r - previous_r_[i]);
+}
+
+bool InterfaceAssembler::set_tie_hints(std::vector<ConeTie> hints) {
+  bool changed = false;
+  for (std::size_t i = 0; i < at_tie_.size() && i < hints.size(); ++i) {
+    if (!at_tie_[i] || hints[i] == ConeTie::ByValue) continue;
+    const ContactStatus wanted =
+        hints[i] == ConeTie::Stick ? ContactStatus::Stick : ContactStatus::Slip;
+    changed = changed || results_[i].status != wanted;
+  }
+  tie_hint_ = std::move(hints);
+  return changed;
 }
 
 void InterfaceAssembler::absorb_displacements() {
@@ -123,14 +137,16 @@ void InterfaceAssembler::evaluate(const std::vector<double>& u, double dtau) {
   tangent_changed_ = false;
   InterfaceResponseDerivatives d;
   force_.resize(iface_.pairs.size());
+  at_tie_.assign(iface_.pairs.size(), 0);
   for (std::size_t i = 0; i < iface_.pairs.size(); ++i) {
     const InterfacePair& p = iface_.pairs[i];
     const LocalVector jump = local_jump(i, u);
     InterfaceState old = committed_[i];
     if (frozen_) old.beta = frozen_beta_[i];
-    const InterfaceResponse resp =
-        frozen_ ? contact::evaluate(*frozen_law_, old, jump, multiplier_[i], dtau, rho_[i], &d)
-                : contact::evaluate(*law_, old, jump, multiplier_[i], dtau, rho_[i], &d);
+    const ConeTie tie = tie_hint_.empty() ? ConeTie::ByValue : tie_hint_[i];
+    const InterfaceResponse resp = contact::evaluate(frozen_ ? *frozen_law_ : *law_, old, jump,
+                                                     multiplier_[i], dtau, rho_[i], &d, tie);
+    at_tie_[i] = resp.tie;
     PairResult& res = results_[i];
     res.beta = resp.beta;
     res.jump = jump;

@@ -158,6 +158,13 @@ public:
   void set_multipliers(const std::vector<LocalVector>& r) { multiplier_ = r; }
   /// Local frame Q_i = [n, t1 (, t2)] of pair `i` (dim × dim, columns).
   LocalMatrix frame(std::size_t i) const;
+  /// The branch each pair takes at the next evaluate()s of this increment where its τ is on
+  /// the stick/slip boundary to within round-off (ConeTie; one per pair, begin_increment()
+  /// forgets them). Returns whether a pair at such a tie in the last evaluate() took the
+  /// other branch.
+  bool set_tie_hints(std::vector<ConeTie> hints);
+  /// Whether this increment started from multipliers extrapolated along the last one.
+  bool predicted() const { return predicted_; }
 
 private:
   LocalVector local_jump(std::size_t pair, const std::vector<double>& u) const;
@@ -190,6 +197,9 @@ private:
   std::vector<InterfaceState> committed_;
   std::vector<LocalVector> previous_r_; ///< r of the increment before the committed one
   std::vector<LocalVector> multiplier_;
+  std::vector<ConeTie> tie_hint_; ///< empty: the projection's own tests decide ties
+  std::vector<char> at_tie_;      ///< τ on the stick/slip boundary at the last evaluate()
+  bool predicted_ = false;        ///< the increment's multipliers were extrapolated
   std::vector<PairResult> results_;
   std::vector<LocalMatrix> tangent_, assembled_tangent_;
   std::vector<InterfaceResponseDerivatives> derivatives_;

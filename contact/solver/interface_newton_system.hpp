@@ -91,6 +91,12 @@ public:
   /// evaluate() (kJ). With grad, adds its derivatives with respect to x (through β's
   /// dependence on the jump): the row a dissipation-controlled step borders J with.
   double released_adhesion_energy(Eigen::VectorXd* grad) const override;
+  /// A pair whose friction force is on the cone to within round-off (ConeTie: typically at an
+  /// increment's start after slip, Δg_t = 0) takes the slip branch if Fx, the force that
+  /// would move its nodes with the multipliers held, drives its jump along its slip (against
+  /// r_t), else stick.
+  bool set_tie_hints(const Eigen::VectorXd& Fx,
+                     const std::vector<bool>& constrained) const override;
 
 private:
   /// add() with each Jacobian entry passed to jac(row, column, value) (null: F only).

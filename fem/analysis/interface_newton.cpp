@@ -87,6 +87,9 @@ bool InterfaceNewton::solve(Eigen::VectorXd& z, const ConvergenceTest& test, int
   for (int it = 0;; ++it, ++log.iterations) {
     auto t0 = std::chrono::steady_clock::now();
     residual(z, F, &J_);
+    // Pairs on a kink to within round-off (friction exactly on the cone at the increment's
+    // start): the branch the coming step needs, from the direction of the residual.
+    if (it == 0 && sys_.set_tie_hints(F.head(nI_), constrained_I_)) residual(z, F, &J_);
     branches = sys_.branches();
     const double force = F.head(nI_).norm(), change = sys_.multiplier_residual(F);
     const bool constraint_met =

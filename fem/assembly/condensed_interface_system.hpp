@@ -54,6 +54,17 @@ public:
   /// evaluate() (kJ); with grad, adds its derivatives with respect to x (the row a
   /// dissipation-controlled step borders J with).
   virtual double released_adhesion_energy(Eigen::VectorXd* grad) const = 0;
+  /// Where a pair sits on a kink of its law to within round-off, as a friction force left
+  /// exactly on the cone at an increment's start, every branch's derivative is an element of
+  /// the generalized Jacobian and round-off picks one: tells the interfaces which to take
+  /// from `Fx`, the interface DOFs' residual F.head(num_dofs()) at the start of a Newton
+  /// iteration, whose direction is the one the coming step takes (rows flagged in
+  /// `constrained` left out). Returns whether a pair's branch changed (the caller evaluates
+  /// again). By default there are no such kinks.
+  virtual bool set_tie_hints(const Eigen::VectorXd& /*Fx*/,
+                             const std::vector<bool>& /*constrained*/) const {
+    return false;
+  }
 };
 
 } // namespace bipot

@@ -210,6 +210,41 @@ TEST(ProjectOntoCone, JacobianOnBranchBoundariesIsAOneSidedLimit) {
   EXPECT_EQ((p.dr_dtau - expected).norm(), 0.0);
 }
 
+// On the stick/slip boundary to within round-off both branches give r = τ, and a tie hint
+// picks the Jacobian: the identity (stick) or the slip branch's, its limit from outside the
+// cone. Off the band the values decide, whatever the hint.
+TEST(ProjectOntoCone, TieTakesTheBranchAsked) {
+  const double mu = 0.5;
+  for (const LocalVector& tau : {vec({2.0, 1.0}), vec({2.0, 0.6, -0.8})}) { // ‖τ_t‖ = μ τ_n
+    const Eigen::Index d = tau.size();
+    LocalVector outside = tau;
+    outside.tail(d - 1) *= 1.0 + 1e-9; // just outside: slip by value
+    const auto slip_limit = project_onto_cone(outside, mu);
+    ASSERT_EQ(slip_limit.status, ContactStatus::Slip);
+    for (const double nudge : {0.0, 3e-16, -3e-16}) {
+      LocalVector t = tau;
+      t.tail(d - 1) *= 1.0 + nudge;
+      const auto by_value = project_onto_cone(t, mu);
+      const auto stick = project_onto_cone(t, mu, ConeTie::Stick);
+      const auto slip = project_onto_cone(t, mu, ConeTie::Slip);
+      EXPECT_TRUE(by_value.tie && stick.tie && slip.tie);
+      EXPECT_EQ(by_value.status, nudge > 0 ? ContactStatus::Slip : ContactStatus::Stick);
+      EXPECT_EQ(stick.status, ContactStatus::Stick);
+      EXPECT_EQ(slip.status, ContactStatus::Slip);
+      expect_vec_near(stick.r, t, 0.0);
+      expect_vec_near(slip.r, t, kClosedFormTol);
+      EXPECT_EQ((stick.dr_dtau - LocalMatrix::Identity(d, d)).norm(), 0.0);
+      EXPECT_LE(relative_error(slip.dr_dtau, slip_limit.dr_dtau), 1e-8);
+    }
+    const auto off = project_onto_cone(outside, mu, ConeTie::Stick);
+    EXPECT_FALSE(off.tie);
+    EXPECT_EQ(off.status, ContactStatus::Slip);
+  }
+  // Frictionless, or τ_n = 0: no tie (no cone to be on the boundary of).
+  EXPECT_FALSE(project_onto_cone(vec({2.0, 0.0}), 0.0, ConeTie::Slip).tie);
+  EXPECT_FALSE(project_onto_cone(vec({0.0, 0.0}), 0.5, ConeTie::Slip).tie);
+}
+
 TEST(BipotentialPredictor, ClosedFormAndDerivatives) {
   // r = (1, 0.2), g_n = 0.01, Δg_t = −0.003, μ̄ = 0.4, ρ = 100:
   // τ_n = 1 − 100 (0.01 + 0.4·0.003) = −0.12, τ_t = 0.2 + 0.3 = 0.5.
