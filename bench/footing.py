@@ -152,7 +152,7 @@ def main():
                 g = run_getfem(bipot_mesh(a.bipot, k, work), a.increments, SETTLEMENT,
                                10.0, YOUNG, POISSON, a.tolerance, lsearch=a.getfem_lsearch,
                                norm2_bound=a.getfem_norm2_bound,
-                               extrapolate=a.getfem_extrapolate)
+                               extrapolate=a.getfem_extrapolate, log=sys.stderr)
                 print(f"# cells {k} bipot: newton {r['per_increment']}", file=sys.stderr)
                 print(f"# cells {k} GetFEM: newton {g['newton']}, converged {g['converged']}, "
                       f"bipot's relative free residual at the end of each increment "

@@ -13,26 +13,32 @@ small-strain elastoplasticity brick on bipot's own tri6 mesh.
   (1/6, 2/3), the one bipot uses for tri6. `small_strain_elastoplasticity_next_iter` commits
   each increment.
 - Constraints: the homogeneous ones (bottom x and y, left and right x) by removing those
-  DOFs (reduction matrices); the footing's vertical settlement by
-  `add_normal_Dirichlet_condition_with_multipliers` (u.n = u_y on the top) with P2
-  multipliers on the footing, integrated with IM_TRIANGLE(6) (exact, so u_y equals the
-  settlement at every footing node; the footing's x stays free: smooth footing).
+  DOFs (reduction matrices); the footing's settlement u_y = s by a multiplier on the P2
+  nodes of the footing (a filtered FEM_PK(2,2) variable) and the term
+  E (u_y - s) mu + E lam v_y integrated with IM_TRIANGLE(6) (exact: u_y = s at every footing
+  node; the footing's x stays free: smooth footing). The factor E makes the constraint rows
+  forces: GetFEM's Dirichlet bricks give them in m^2, and its Newton adds every row into one
+  norm (its backtracking then compared a force residual with a 1e-3 m^2 start: tried first,
+  it stalled).
 - Newton: `Model.solve` with its default line search. In GetFEM 5.4 (Debian's python3-getfem)
   the Python interface's 'default' is the Newton "with step control" (not the older
-  default_newton_line_search): it solves F(U) = (1 - alpha) F(U0) with alpha raised from 0
-  to 1 (alpha halved back when the iterations stagnate) and backtracks each step (halving)
-  while the residual is above a slowly decreasing multiple of the last one. Converged when
-  ||F||_1 (every row: forces and the multiplier rows) <= max_res x approx_external_load,
-  which is here the norm 1 of the Dirichlet term, |settlement| x B/2 (units m^2). So
-  max_res = tolerance x reference / (|settlement| B/2) makes the test ||F||_1 <= tolerance
-  x reference, in force units, with bipot's reference: the reaction norm (2-norm of the
-  nodal reactions on every constrained DOF) of the last converged increment, or in the first
-  increment the 2-norm of the free rows' forces when only the settlement is applied. This is
-  stricter than bipot's 2-norm test by at most sqrt(rows); --getfem-norm2-bound also runs
-  the looser bound (tolerance x reference x sqrt(rows)), so bipot's test lies between the two.
-- The zero state has an empty tangent in this law (the derivative of the deviator's norm at
-  0, a 0 x inf); GetFEM's own fix (a 1e-50 perturbation) then stalls, so the first increment
-  starts from a 1e-12 m random displacement instead.
+  default_newton_line_search): it solves F(U) = (1 - alpha) F(U0), alpha = 1 first, halved
+  back towards the last reached alpha after more than 10 stagnating iterations, and each
+  step is halved (down to 1e-5) only while the residual exceeds a multiple of the last one
+  (2, times 0.93 per iteration, down to 1.05): steps that raise the residual are accepted.
+  The other line searches ('basic', the older default, ...) go through the classical
+  Newton, which also stops on a small step: ||dU||_1 / ||U||_1 <= max_res.
+  Converged when ||F||_1 (every row) <= max_res x approx_external_load; no brick here
+  declares an external load, so GetFEM takes 1 and max_res = tolerance x reference is a force
+  with bipot's reference: the 2-norm of the nodal reactions on every constrained DOF at the
+  last converged increment (in the first one, the 2-norm of the free rows' forces with only
+  the settlement applied). The 1-norm makes this stricter than bipot's 2-norm test by at most
+  sqrt(rows); --getfem-norm2-bound runs the looser bound (x sqrt(rows)) to bracket it.
+- Start: each increment from the last converged state, GetFEM's way (its first iteration
+  applies the settlement through the tangent), or with --getfem-extrapolate from the last
+  increment extrapolated, bipot's predictor. The zero state has an empty tangent in this law
+  (the deviator's norm is differentiated at 0) and MUMPS calls it singular, so the first
+  increment starts from a 1e-12 m random displacement.
 
 After each increment: the internal forces f = int sigma : grad(phi) on the unreduced space
 (sigma from the committed plastic strain), the footing force sum f_y over the footing's
@@ -82,7 +88,7 @@ class _Capture:
 
 
 def run_getfem(vtu, increments, settlement, c, young, poisson, tolerance, lsearch="default",
-               lsolver="mumps", norm2_bound=False, extrapolate=False, max_iter=200):
+               lsolver="mumps", norm2_bound=False, extrapolate=False, max_iter=200, log=None):
     import getfem as gf
     gf.util_trace_level(0)
     t_start = time.perf_counter()
@@ -177,7 +183,7 @@ def run_getfem(vtu, increments, settlement, c, young, poisson, tolerance, lsearc
     reference = float(np.linalg.norm(internal_forces(u1, ep0)[free]))
     rows = md.nbdof()
     u_prev = None
-    its, conv, times, checks, histories = [], [], [], [], []
+    its, conv, times, checks, histories, refs = [], [], [], [], [], []
     q = float("nan")
     for k in range(1, increments + 1):
         g = -settlement * k / increments
@@ -186,6 +192,7 @@ def run_getfem(vtu, increments, settlement, c, young, poisson, tolerance, lsearc
         if extrapolate and u_prev is not None:
             md.set_variable("u", 2 * u_now - u_prev)
         u_prev = u_now
+        refs.append(reference)
         scale = reference * (np.sqrt(rows) if norm2_bound else 1.0)
         max_res = tolerance * scale
         t0 = time.perf_counter()
@@ -200,10 +207,14 @@ def run_getfem(vtu, increments, settlement, c, young, poisson, tolerance, lsearc
         md.small_strain_elastoplasticity_next_iter(*law)
         f = internal_forces(full(md.variable("u")), md.variable("Previous_Ep"))
         checks.append(float(np.linalg.norm(f[free])) / reference)
+        if log:
+            print(f"#   GetFEM increment {k}: {nit} iterations, {times[-1]:.1f} s", file=log,
+                  flush=True)
         q = abs(float(f[footing].sum())) / HALF_WIDTH
         reference = float(np.linalg.norm(f[~free]))
         if not ok:
             break
     return {"dofs": nd, "rows": rows, "increments": len(its), "newton": its, "converged": conv,
             "seconds": time.perf_counter() - t_start, "solve": sum(times),
-            "q_over_c": q / c, "free_residual": checks, "histories": histories}
+            "q_over_c": q / c, "free_residual": checks, "histories": histories,
+            "references": refs}
