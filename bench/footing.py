@@ -84,7 +84,8 @@ def run(bipot, k, increments, workdir):
         rows = list(csv.DictReader(f))
     q = abs(float(rows[-1]["footing_fy"])) / 0.5
     return {"k": k, "dofs": int(dofs.group(1)) if dofs else 0, "increments": len(newton),
-            "newton": sum(newton), "per_increment": newton, "cutbacks": int(cut.group(1)) if cut else 0,
+            "newton": sum(newton), "per_increment": newton,
+            "cutbacks": int(cut.group(1)) if cut else 0,
             "seconds": float(t.group(1)), "assembly": float(t.group(2)),
             "setup": float(t.group(3)), "solve": float(t.group(4)), "memory": float(t.group(5)),
             "q_over_c": q / c}
@@ -120,7 +121,7 @@ def main():
     p.add_argument("--cells", default="12,38")
     p.add_argument("--increments", type=int, default=20)
     p.add_argument("--getfem", action="store_true",
-                   help="also solve each size with GetFEM on bipot's mesh (bench/footing_getfem.py)")
+                   help="also solve each size with GetFEM on bipot's mesh (footing_getfem.py)")
     p.add_argument("--getfem-lsearch", default="default",
                    choices=["default", "basic", "simplest", "systematic", "quadratic"],
                    help="Model.solve's line search ('default': Newton with step control)")
@@ -168,8 +169,8 @@ def main():
         print("|---|---|---|---|---|---|---|")
         for k, r, g in rows:
             print(f"| {k} | {r['dofs']} | bipot | {r['increments']} | {r['newton']} "
-                  f"({r['newton'] / r['increments']:.2f}) | {r['seconds']:.1f} s | "
-                  f"{r['q_over_c']:.6f} |")
+                  f"({r['newton'] / r['increments']:.2f}, {max(r['per_increment'])}) | "
+                  f"{r['seconds']:.1f} s | {r['q_over_c']:.6f} |")
             name = f"GetFEM {a.getfem_lsearch}" + (", extrapolated" if a.getfem_extrapolate else "")
             failed = "" if all(g["converged"]) else " (not converged)"
             print(f"| {k} | {g['dofs']} | {name} | {g['increments']}{failed} | {sum(g['newton'])} "
