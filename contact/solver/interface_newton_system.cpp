@@ -190,9 +190,10 @@ bool InterfaceNewtonSystem::set_tie_hints(const Eigen::VectorXd& Fx,
     std::vector<ConeTie> hints(ia->num_pairs(), ConeTie::ByValue);
     for (const PairSlots& s : pairs_) {
       if (s.iface != ia) continue;
-      // The jump u_b − u_a moves as the free nodes' forces push them (the condensed bulk
-      // couples the nodes, but its diagonal dominates): its tangential part against r_t
-      // continues the slip, along r_t reverses it, which the cone's interior takes.
+      // How the residual pushes the jump u_b − u_a, from the forces on the pair's own free
+      // DOFs (a local estimate: the condensed bulk also couples the nodes): its tangential
+      // part against r_t continues the slip, along r_t reverses it, which the cone's interior
+      // takes.
       Eigen::VectorXd push = Eigen::VectorXd::Zero(dim_);
       for (int c = 0; c < dim_; ++c) {
         if (s.b >= 0 && !constrained[s.b + c]) push(c) += Fx(s.b + c);
