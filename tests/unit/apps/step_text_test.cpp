@@ -27,9 +27,11 @@ TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
   EXPECT_NE(kept.find("363 increments kept over it"), std::string::npos) << kept;
   EXPECT_NE(kept.find("worst balance error 1.6e-06 (6.8e-07 leaving out"), std::string::npos)
       << kept;
+  EXPECT_NE(kept.find("a larger contact_solver.max_cutbacks"), std::string::npos) << kept;
   const std::string none = stepping_summary(controlled_run(0), "app");
   EXPECT_NE(none.find("worst balance error 1.6e-06 of the work put in"), std::string::npos) << none;
   EXPECT_EQ(none.find("6.8e-07"), std::string::npos) << none;
+  EXPECT_EQ(none.find("max_cutbacks"), std::string::npos) << none;
   // A run without the control says nothing of it.
   EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
 }
