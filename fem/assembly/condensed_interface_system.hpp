@@ -58,7 +58,7 @@ public:
   /// exactly on the cone at an increment's start, every branch's derivative is an element of
   /// the generalized Jacobian and round-off picks one: tells the interfaces which to take
   /// from `Fx`, the interface DOFs' residual F.head(num_dofs()) at the start of a Newton
-  /// iteration, whose direction is the one the coming step takes (rows flagged in
+  /// iteration, whose direction indicates where the coming step goes (rows flagged in
   /// `constrained` left out). Returns whether a pair's branch changed (the caller evaluates
   /// again). By default there are no such kinks.
   virtual bool set_tie_hints(const Eigen::VectorXd& /*Fx*/,
