@@ -65,16 +65,20 @@ output: {{directory: {directory}, vtk: {str(vtk).lower()}}}
 """, c
 
 
-def run(bipot, k, increments, workdir):
-    out_dir = os.path.join(workdir, f"footing_{k}")
-    text, c = footing_input(k, increments, out_dir)
-    path = os.path.join(workdir, f"footing_{k}.yaml")
+def run_bipot(bipot, text, path):
+    """Writes the input `text` to `path` and runs bipot on it; stops the bench if it fails."""
     with open(path, "w") as f:
         f.write(text)
     out = subprocess.run([bipot, "run", path], capture_output=True, text=True)
     if out.returncode != 0:
         sys.exit(f"{path}: exit {out.returncode}\n{out.stdout}\n{out.stderr}")
-    text = out.stdout + out.stderr
+    return out.stdout + out.stderr
+
+
+def run(bipot, k, increments, workdir):
+    out_dir = os.path.join(workdir, f"footing_{k}")
+    text, c = footing_input(k, increments, out_dir)
+    text = run_bipot(bipot, text, os.path.join(workdir, f"footing_{k}.yaml"))
     newton = [int(m.group(1)) for m in re.finditer(r"newton\s+(\d+)", text)]
     cut = re.search(r"(\d+) cut-backs?\b", text)
     t = re.search(r"time ([\d.]+) s = assembly ([\d.]+) \+ set-up ([\d.]+) \+ solve ([\d.]+)"
@@ -95,24 +99,8 @@ def bipot_mesh(bipot, k, workdir):
     """The first .vtu of a one-increment, 1 nm settlement run: bipot's mesh, for GetFEM."""
     out_dir = os.path.join(workdir, f"mesh_{k}")
     text, _ = footing_input(k, 1, out_dir, settlement=1e-9, vtk=True)
-    path = os.path.join(workdir, f"mesh_{k}.yaml")
-    with open(path, "w") as f:
-        f.write(text)
-    out = subprocess.run([bipot, "run", path], capture_output=True, text=True)
-    if out.returncode != 0:
-        sys.exit(f"{path}: exit {out.returncode}\n{out.stdout}\n{out.stderr}")
+    run_bipot(bipot, text, os.path.join(workdir, f"mesh_{k}.yaml"))
     return os.path.join(out_dir, sorted(f for f in os.listdir(out_dir) if f.endswith(".vtu"))[0])
-
-
-def reexec_with_system_python():
-    try:
-        import getfem  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        system = "/usr/bin/python3"
-        if os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
-            os.execv(system, [system] + sys.argv)
-        sys.exit("GetFEM's Python module is missing: apt-get install python3-getfem")
 
 
 def main():
@@ -135,7 +123,8 @@ def main():
                    help="GetFEM's tolerance (bipot uses its default, 1e-8)")
     a = p.parse_args()
     if a.getfem:
-        reexec_with_system_python()
+        from frictional_block import reexec_with_system_python
+        reexec_with_system_python(alternative="")
     print("| cells under B/2 | DOFs | increments | Newton iterations (per increment) | cut-backs "
           "| wall time | assembly | set-up | solve | peak memory | q/c (2 + pi = 5.1416) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|", flush=True)

@@ -346,7 +346,8 @@ def compare(b, g):
     return res
 
 
-def reexec_with_system_python():
+def reexec_with_system_python(alternative=" (or run with --skip-getfem)"):
+    """Runs the script again with Debian's python3 when this interpreter lacks GetFEM."""
     try:
         import getfem  # noqa: F401
         import numpy  # noqa: F401
@@ -354,8 +355,7 @@ def reexec_with_system_python():
         system = "/usr/bin/python3"
         if os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
             os.execv(system, [system] + sys.argv)
-        sys.exit("GetFEM's Python module is missing: apt-get install python3-getfem "
-                 "(or run with --skip-getfem)")
+        sys.exit("GetFEM's Python module is missing: apt-get install python3-getfem" + alternative)
 
 
 def main():
