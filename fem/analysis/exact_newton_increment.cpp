@@ -52,6 +52,8 @@ struct ExactNewtonIncrement::Increment {
       constrained_I[k] = ctx.target.count(sys.dofs()[k]) != 0;
   }
   double lambda, dtau;
+  /// A path's Δλ over the outer iterations so far (a nonlinear bulk; 0 before the first).
+  double dlambda = 0;
   PathStep* path;
   int iteration_limit; ///< of the Newton iterations on the interface
   std::vector<Index> constrained_dofs;
@@ -68,11 +70,13 @@ void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, boo
   const std::vector<double>& u = ctx_.u;
   SparseMatrix& K = ctx_.K;
   DistributedVector &R = ctx_.R, &F_step = ctx_.F_step;
-  // R0 = F − f_int(u), the prescribed increments eliminated (first pass).
+  // R0 = F − f_int(u), the prescribed increments eliminated (first pass). A path's outer
+  // iterations have moved the load factor by inc.dlambda.
+  const double lambda = inc.lambda + inc.dlambda;
   inc.constraints.clear();
   for (const auto& [d, v] : ctx_.target)
-    inc.constraints.set(
-        d, outer == 0 ? ctx_.start.at(d) + inc.lambda * (v - ctx_.start.at(d)) - u[d] : 0.0);
+    inc.constraints.set(d, outer == 0 ? ctx_.start.at(d) + lambda * (v - ctx_.start.at(d)) - u[d]
+                                      : 0.0);
   // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
   // from products with K, assembled with K at each refactorisation.
   const bool by_product = ctx_.linear && ctx_.rigid.empty();
@@ -89,12 +93,15 @@ void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, boo
   ctx_.add_step_loads(inc.constraints);
   if (!inc.path) return;
   // Path-following: R is affine in the load factor (prescribed values and loads are), so
-  // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ.
+  // R(λ + Δλ) = R + Δλ R1 with R1 the difference of the residuals at λ + 1 and λ. With a
+  // nonlinear bulk it is so to first order: assemble() lifts the prescribed values through
+  // the tangent at u (Constraints::condense), so R1 is ∂R/∂λ at u, the border of Newton's
+  // linearisation.
   const DistributedVector R_lambda = R;
   const DistributedVector F_lambda = F_step;
   Constraints ahead;
   for (const auto& [d, v] : ctx_.target)
-    ahead.set(d, ctx_.start.at(d) + (inc.lambda + 1.0) * (v - ctx_.start.at(d)) - u[d]);
+    ahead.set(d, ctx_.start.at(d) + (lambda + 1.0) * (v - ctx_.start.at(d)) - u[d]);
   F_step.axpy(1.0, ctx_.F_cur);
   F_step.axpy(-1.0, ctx_.F_prev);
   R.set_zero();
@@ -126,6 +133,7 @@ bool ExactNewtonIncrement::condense(Increment& inc, IncrementLog& log) {
   // S changes: the old Newton matrix is no preconditioner. Its factors go before MUMPS
   // factorises, the run's peak out of core (at 307k DOFs: 492 -> 474 MB).
   newton_matrix_.reset();
+  if (!ctx_.linear) path_matrix_.reset();
   try {
     // A linear (elastic) bulk has a symmetric K: LDLᵀ, half the factors. The whole-mesh
     // residual check after each increment would catch a K that is not.
@@ -190,6 +198,15 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
   ctx_.begin_increment(request.lambda);
   Increment inc(request, ctx_, sys_);
   ConvergenceTest& test = inc.test;
+  // A path step on a nonlinear bulk: its outer iterations move x and λ on from where the
+  // earlier ones left them; the constraint counts the whole increment (PathStep::x_offset).
+  const bool path_outer = path && !linear;
+  Eigen::VectorXd x_start;
+  if (path) path->x_offset.resize(0);
+  if (path_outer) {
+    x_start = on_interface_dofs(sys_, u);
+    path->x_offset.setZero(nI);
+  }
   for (int outer = 0;; ++outer) {
     auto t0 = std::chrono::steady_clock::now();
     const bool refactor = !schur_ready_ || !linear || inc.constrained_dofs != schur_constrained_;
@@ -211,7 +228,10 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
     // inner solutions, off the law, so the outer test and merit need it besides equilibrium.
     const double law = law_residual(sys_, inc.constrained_I);
     if (outer > 0) {
-      if (test.forces_met(full_norm) && test.law_met(law)) return true;
+      const bool path_met =
+          !path_outer || std::abs(path->constraint(sys_, Eigen::VectorXd::Zero(n + 1), nullptr)) <=
+                             path->constraint_tolerance(copt.tolerance);
+      if (test.forces_met(full_norm) && test.law_met(law) && path_met) return true;
       if (outer >= copt.max_iterations) {
         log.failure = "the bulk (outer) iterations did not converge in " + std::to_string(outer) +
                       " condensations";
@@ -232,9 +252,11 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
     Eigen::VectorXd z(path ? n + 1 : n);
     z.head(nI).setZero();
     z.segment(nI, n - nI) = lambda0;
-    if (path) {
+    if (path && outer == 0) {
       z.head(nI) = path->predictor_scale * path->x_prev;
       z(n) = path->predictor_scale * path->dlambda_prev;
+    } else if (path) {
+      z(n) = 0.0; // later outer iterations correct from the current state
     }
     ReusedLuSolver& newton_solver = path ? path_matrix_ : newton_matrix_;
     if (!newton.solve(z, test, inc.iteration_limit, newton_solver, log)) return false;
@@ -249,13 +271,15 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
       // edge/apex, elastic/plastic) and the apex's zero tangent makes K nearly singular
       // nearby, the full step can overshoot and the undamped iteration cycles (the
       // Mohr-Coulomb pile did, period 3). The prescribed DOFs always take their whole
-      // increment; the multipliers move along with the displacements.
+      // increment; the multipliers move along with the displacements. On a path the
+      // prescribed DOFs and the loads follow the load factor, which the step scales.
       t0 = std::chrono::steady_clock::now();
       const Constraints fixed = ctx_.held();
       std::vector<double> trial(u.size());
       step = backtracking_step(std::hypot(full_norm, law), [&](double s) {
         for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + (inc.prescribed[i] ? 1.0 : s) * du_all[i];
+          trial[i] = u[i] + (inc.prescribed[i] && !path ? 1.0 : s) * du_all[i];
+        if (path) ctx_.set_step_loads(inc.lambda + inc.dlambda + s * z(n));
         sys_.set_multipliers(lambda0 + s * (lambda1 - lambda0));
         const double force = ctx_.residual_norm(trial, inc.dtau, fixed);
         return std::hypot(force, law_residual(sys_, inc.constrained_I));
@@ -263,13 +287,18 @@ bool ExactNewtonIncrement::solve(const IncrementRequest& request, IncrementLog& 
       ctx_.summary.assembly_seconds += seconds_since(t0);
     }
     for (std::size_t i = 0; i < u.size(); ++i)
-      u[i] += (inc.prescribed[i] ? 1.0 : step) * du_all[i];
+      u[i] += (inc.prescribed[i] && !path ? 1.0 : step) * du_all[i];
     sys_.set_multipliers(lambda0 + step * (lambda1 - lambda0));
     for (const auto& ia : ctx_.interfaces)
       ia->evaluate(u, inc.dtau);
-    if (!linear && path) {
-      log.failure = "path-following needs a linear bulk (a bulk material is nonlinear)";
-      return false;
+    if (path_outer) {
+      // The whole increment so far: what the path reports, and the offset of the next outer
+      // iteration's constraint.
+      inc.dlambda += step * z(n);
+      ctx_.set_step_loads(inc.lambda + inc.dlambda);
+      path->x_offset = on_interface_dofs(sys_, u) - x_start;
+      path->x = path->x_offset;
+      path->dlambda = inc.dlambda;
     }
     if (!linear) continue; // re-assemble the bulk at the new state and test it
     // Linear bulk: the condensation is exact; check it (a matrix-vector product) rather than

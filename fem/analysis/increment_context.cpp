@@ -8,10 +8,14 @@
 
 namespace bipot {
 
-void IncrementContext::begin_increment(double lambda) {
+void IncrementContext::set_step_loads(double lambda) {
   F_step.copy(F_prev);
   F_step.scale(1.0 - lambda);
   F_step.axpy(lambda, F_cur);
+}
+
+void IncrementContext::begin_increment(double lambda) {
+  set_step_loads(lambda);
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
     interfaces[k]->set_gap_shift(gap_start[k] + lambda * (gap_target[k] - gap_start[k]));
     interfaces[k]->begin_increment(extrapolation);

@@ -42,6 +42,18 @@ void InterfaceNewton::residual(const Eigen::VectorXd& at, Eigen::VectorXd& out,
     if (jac) {
       for (Index i = 0; i < nI_; ++i)
         entries_.emplace_back(i, n_, c1_(i));
+      // A dissipation constraint with no gradient (no pair softens at this iterate) borders
+      // J with a zero row. From the predictor on (e.g. that of a step whose ramp failed for
+      // the bulk's sake) such Newton steps hold Δλ (row dΔλ = 0): where they land pairs soften
+      // and the constraint acts, or equilibrium is met with none softening (nothing_softens).
+      // Once the constraint has acted, a zero row fails the step as singular, as it did before
+      // holding: holding there sent the energy-controlled column off its path (to the
+      // staggered fallback) where the halved step stays on it.
+      const bool no_gradient =
+          path_->kind == PathStep::Kind::Dissipation && grad_.cwiseAbs().maxCoeff() == 0.0;
+      lambda_held_ = holding_ && no_gradient;
+      holding_ = lambda_held_;
+      if (lambda_held_) entries_.emplace_back(n_, n_, 1.0);
       for (Index j = 0; j < nz_; ++j)
         if (grad_(j) != 0.0) entries_.emplace_back(n_, j, grad_(j));
     }
@@ -97,7 +109,14 @@ bool InterfaceNewton::solve(Eigen::VectorXd& z, const ConvergenceTest& test, int
     summary.assembly_seconds += seconds_since(t0);
     if (ctx_.linear) log.history.push_back(test.relative(force));
     log.contact = test.relative(change);
-    if (test.forces_met(force) && test.law_met(change) && constraint_met) return true;
+    if (test.forces_met(force) && test.law_met(change)) {
+      if (constraint_met) return true;
+      if (lambda_held_) {
+        log.failure = "no interface softens within the step: its dissipation cannot be met";
+        log.nothing_softens = true;
+        return false;
+      }
+    }
     if (!std::isfinite(force) || !std::isfinite(change)) {
       log.failure = "the interface residual is not finite";
       return false;
@@ -121,7 +140,9 @@ bool InterfaceNewton::solve(Eigen::VectorXd& z, const ConvergenceTest& test, int
     const double eta =
         path_ ? 0.0
               : std::min({1e-3, test.relative(F.norm()), 0.1 * test.force_floor() / F.norm()});
-    dz = newton_solver.solve(J_, -F, eta);
+    Eigen::VectorXd rhs = -F;
+    if (path_ && lambda_held_) rhs(n_) = 0.0;
+    dz = newton_solver.solve(J_, rhs, eta);
     summary.solve_seconds += seconds_since(t0);
     ++summary.linear_solves;
     summary.matrix_setups += newton_solver.factorizations() - factorizations;

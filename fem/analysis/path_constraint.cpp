@@ -4,6 +4,14 @@
 
 namespace bipot {
 
+Eigen::VectorXd on_interface_dofs(const CondensedInterfaceSystem& sys,
+                                  const std::vector<double>& u) {
+  Eigen::VectorXd v(sys.num_dofs());
+  for (Index k = 0; k < sys.num_dofs(); ++k)
+    v(k) = u[sys.dofs()[k]];
+  return v;
+}
+
 double PathStep::constraint(const CondensedInterfaceSystem& sys, const Eigen::VectorXd& z,
                             Eigen::VectorXd* grad) const {
   const Index nI = sys.num_dofs(), n = sys.size();
@@ -14,8 +22,10 @@ double PathStep::constraint(const CondensedInterfaceSystem& sys, const Eigen::Ve
     // fall, so they parametrise the path where λ does not. Weighing λ in as well (a sphere)
     // stalled at the corner of a sharp snap-back (the column test: softening 30 times steeper
     // than the elastic unloading), and Riks' normal plane misses a branch that turns back.
-    const double norm = z.head(nI).norm();
-    if (grad && norm > 0) grad->head(nI) = z.head(nI) / norm;
+    const Eigen::VectorXd x =
+        x_offset.size() == nI ? Eigen::VectorXd(x_offset + z.head(nI)) : z.head(nI);
+    const double norm = x.norm();
+    if (grad && norm > 0) grad->head(nI) = x / norm;
     return norm - length;
   }
   // The energy adhesion loss releases over the step (Gutiérrez's dissipation control, with

@@ -39,10 +39,7 @@ double PathControl::adhesion_capacity() const {
 }
 
 Eigen::VectorXd PathControl::on_interface(const std::vector<double>& u) const {
-  Eigen::VectorXd v(sys_->num_dofs());
-  for (Index k = 0; k < sys_->num_dofs(); ++k)
-    v(k) = u[sys_->dofs()[k]];
-  return v;
+  return on_interface_dofs(*sys_, u);
 }
 
 PathStep& PathControl::step(int level) {
@@ -71,7 +68,7 @@ bool PathControl::forward(const PathStep& step) const {
 }
 
 bool PathControl::can_switch() const {
-  return stage_.control.type == "dissipation" && mode_ == Mode::Ramp && !finished_ &&
+  return stage_.control.type == "dissipation" && mode_ == Mode::Ramp && !finished_ && !declined_ &&
          capacity_ > 0 && x_prev_.size() != 0;
 }
 
@@ -84,6 +81,7 @@ bool PathControl::switch_on_failure() {
 void PathControl::end_increment(const std::vector<double>& u, const std::vector<double>& u_begin,
                                 double dlambda, int iterations, bool may_grow) {
   traced_last_ = mode_ != Mode::Ramp;
+  declined_ = false;
   dissipation_last_ = 0;
   if (!stage_.control.path_following()) return;
   const Eigen::VectorXd x = on_interface(u) - on_interface(u_begin);

@@ -43,6 +43,10 @@ public:
   /// A ramp increment failed: true if dissipation control takes over (the stage asks for
   /// it, an interface has adhesion left, and an earlier increment gives a direction).
   bool switch_on_failure();
+  /// A traced step found no pair softening within reach (IncrementLog::nothing_softens: the
+  /// ramp failed for the bulk's sake, e.g. a plastic soil): back to the ramp, which cuts
+  /// back instead of handing over again until an increment converges.
+  void decline() { mode_ = Mode::Ramp, declined_ = true; }
   /// The Newton iterations a ramp increment gets (0: the contact solver's own limit). Where a
   /// failure would hand over to dissipation control, a ramp increment slower than one that
   /// makes a traced step shrink (slow_iterations) fails: the ramp that cannot follow a
@@ -80,7 +84,7 @@ private:
   const CondensedInterfaceSystem* sys_;
   const std::vector<std::unique_ptr<InterfaceEnforcement>>& interfaces_;
   Mode mode_ = Mode::Ramp;
-  bool finished_ = false, traced_last_ = false;
+  bool finished_ = false, traced_last_ = false, declined_ = false;
   int max_increments_;
   double planned_;
   double capacity_ = 0;             ///< adhesion energy left at the stage's start (kJ)

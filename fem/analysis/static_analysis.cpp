@@ -114,6 +114,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     // attempt that converged and keeps it, flagged over the budget: the control never makes
     // a run fail that would have gone on without it.
     int energy_converged_level = -1;
+    int ramp_failed_at = -1; // the halving level of the ramp failure that handed over
     bool energy_last_resort = false;
     const auto energy_retreat = [&](std::chrono::steady_clock::time_point attempt_start) {
       if (energy_converged_level < 0 || energy_last_resort) return false;
@@ -162,6 +163,18 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         }
         if (!converged) {
           u = u_begin;
+          // The traced step found no pair softening within reach (the ramp had failed for the
+          // bulk's sake, e.g. a plastic soil): the ramp takes the increment back, halved once
+          // more than where it failed. Halving the traced step would not help: its predictor
+          // is the ramp's step whatever its length when the last increment released nothing.
+          if (log.nothing_softens && ramp_failed_at >= 0 && ramp_failed_at < max_cutbacks) {
+            path.decline();
+            level = ramp_failed_at + 1;
+            ramp_failed_at = -1;
+            ++summary.cutbacks;
+            failed_seconds += seconds_since(attempt_start);
+            continue;
+          }
           if (level < max_cutbacks) {
             ++level;
             ++summary.cutbacks;
@@ -194,6 +207,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         bool beta_can_change = false;
         if (!converged && path.switch_on_failure()) {
           // A ramp that cannot follow a softening interface: dissipation control from here.
+          ramp_failed_at = level;
           u = u_begin;
           matrix_ready = false;
           failed_seconds += seconds_since(attempt_start);

@@ -133,7 +133,7 @@ TEST(PileTraced, FollowsTheSnapBackThroughTheRampsEquilibria) {
 // unstable branch), not only on average. With the constraint held to the solver tolerance and
 // weighted like a force in the line search's merit, single steps took 17 (100 increments) and
 // 20 (120) iterations; 5 with the constraint held to √tolerance and weighted by it
-// (docs/theory.md, "Path-following"), but 6 at 80, where the step after the snap-back's turn
+// (docs/path_following.md), but 6 at 80, where the step after the snap-back's turn
 // kept the length of the turn's 4-iteration step; halved, it takes 5. A ramp increment that
 // fails into dissipation control costs at most PathControl::slow_iterations solves (it took
 // the contact solver's 50 before).
@@ -189,6 +189,44 @@ TEST(PileTraced, BalanceHoldsAtEveryStep) {
   EXPECT_GE(softening, 3);
   EXPECT_EQ(summary.staggered_increments, 0);
   EXPECT_EQ(summary.energy_halvings, 0);
+}
+
+// The pile in Mohr-Coulomb soil (rccm_mohr_coulomb.yaml) at viscosity 0 under dissipation
+// control, to 25 mm: its ramp fails repeatedly for the soil's sake (at 21.5 mm first) before
+// any pair softens. The traced step it hands over to finds no pair softening
+// (IncrementLog::nothing_softens), so the ramp takes the increment back and cuts back
+// (PathControl::decline), as the ramp alone does; before, the traced step failed as singular
+// at every halving and the run stopped at 21.5 mm. The run must pass through the same equilibria as
+// the ramp alone (the same increments solved the same way: 1e-6), with the energy balance at
+// round-off at every step (plastic dissipation in closed form, rate-independent adhesion).
+TEST(PileTraced, PlasticSoilRampFailuresGoBackToTheRamp) {
+  pile::PileSpec spec = pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) +
+                                                 "/inputs/pile_pullout/rccm_mohr_coulomb.yaml",
+                                             bipot::builtin_catalogue());
+  spec.law_parameters.set("adhesion_viscosity", 0.0);
+  spec.pullout.head_displacement = 0.025; // the shipped 0.5 mm steps
+  spec.pullout.increments = 50;
+  RunSummary declined, ramp_only;
+  const auto controlled = pull_out(spec, "dissipation", 0.0, nullptr, &declined);
+  const auto ramped = pull_out(spec, "ramp", 0.0, nullptr, &ramp_only);
+  std::printf("dissipation control: %d increments, %d cut-backs, %d traced; ramp: %d increments, "
+              "%d cut-backs\n",
+              declined.steps, declined.cutbacks, declined.traced_increments, ramp_only.steps,
+              ramp_only.cutbacks);
+  EXPECT_GE(declined.cutbacks, 1);
+  EXPECT_EQ(declined.cutbacks, ramp_only.cutbacks); // no attempt lost to the hand-over
+  EXPECT_EQ(declined.staggered_increments, 0);
+  int common = 0;
+  for (const auto& [key, p] : controlled) {
+    EXPECT_LT(p.energy_error, 1e-10) << "head displacement " << key * 1e-9 << " mm";
+    const auto it = ramped.find(key);
+    if (it == ramped.end()) continue;
+    ++common;
+    EXPECT_NEAR(p.force, it->second.force, 1e-6 * std::abs(it->second.force))
+        << "head displacement " << key * 1e-9 << " mm";
+  }
+  EXPECT_GE(common, 40);
+  EXPECT_NEAR(controlled.rbegin()->first * 1e-12, 0.025, 1e-9); // it reached 25 mm
 }
 
 } // namespace

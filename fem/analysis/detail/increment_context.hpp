@@ -67,6 +67,9 @@ struct IncrementContext {
   /// At the start of an increment to stage load factor `lambda`: the loads, gap shifts and
   /// obstacles there, and the interfaces' multiplier predictor.
   void begin_increment(double lambda);
+  /// F_step = the loads at stage load factor `lambda` (begin_increment's, and a path step's
+  /// as its outer iterations move λ).
+  void set_step_loads(double lambda);
   /// R += F_step on the DOFs `constraints` leaves free (their rows are the equilibrium).
   void add_step_loads(const Constraints& constraints);
   /// ‖v‖ over the rows `constraints` leaves free (collective): the equilibrium part of a

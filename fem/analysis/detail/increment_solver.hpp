@@ -24,6 +24,9 @@ struct IncrementLog {
   std::vector<double> history; ///< relative force residual per iteration
   double contact = 0;          ///< last relative multiplier change
   std::string failure;
+  /// A dissipation-controlled step met equilibrium and the law where no pair softens: the
+  /// constraint cannot be met (PathControl::decline()).
+  bool nothing_softens = false;
 };
 
 /// One increment to solve, from the state in the solver's IncrementContext.

@@ -64,6 +64,8 @@ private:
   std::vector<Eigen::Triplet<double>> entries_; ///< J's sparse part
   Eigen::VectorXd grad_;                        ///< the path constraint's gradient
   double g_weight_ = 0;                         ///< the path constraint's weight in the merit
+  bool lambda_held_ = false; ///< the constraint had no gradient at the last Jacobian: dΔλ = 0
+  bool holding_ = true;      ///< every Jacobian so far had Δλ held
 };
 
 } // namespace bipot

@@ -7,8 +7,13 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <vector>
 
 namespace bipot {
+
+/// The entries of `u` on the interface DOFs I of `sys`, in its order.
+Eigen::VectorXd on_interface_dofs(const CondensedInterfaceSystem& sys,
+                                  const std::vector<double>& u);
 
 /// One path-following increment (stage `control:` arc_length or dissipation): the load
 /// factor's increment Δλ joins the unknowns of the generalized Newton step, bordered by one
@@ -21,8 +26,11 @@ struct PathStep {
   Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
   double dlambda_prev = 0, length = 0; ///< Δλ_prev; arc_length: L (m)
   Eigen::VectorXd u0, f0;              ///< dissipation: at the increment's start
-  double dissipation = 0;              ///< Δτ (kJ)
-  double predictor_scale = 1;          ///< z0 = scale × (x_prev, Δλ_prev)
+  /// A nonlinear bulk's outer iterations: how far I moved in the earlier ones of this
+  /// increment (x counts from the current bulk state); empty: none.
+  Eigen::VectorXd x_offset;
+  double dissipation = 0;     ///< Δτ (kJ)
+  double predictor_scale = 1; ///< z0 = scale × (x_prev, Δλ_prev)
   // Out: the converged increment.
   Eigen::VectorXd x;
   double dlambda = 0;
