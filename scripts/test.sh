@@ -18,9 +18,10 @@ source "$root/scripts/env.sh"
 ci_sanitize_targets="core_tests materials_tests element_tests contact_laws_tests mesh_tests
   io_tests io_mpi_tests linalg_tests input_tests docs_tables_match_schemas app_support_tests
   contact_interface_tests contact_solver_tests patch_test contact_block_test rccm_pull_test
-  interface_declarations_test analysis_unit_tests bipot yaml_replay msh_replay leak_is_reported"
+  interface_declarations_test path_following_test analysis_unit_tests bipot yaml_replay msh_replay
+  leak_is_reported"
 ci_sanitize_tests='^([a-z_]+_tests(_np1)?|docs_tables_match_schemas|patch_test_np[12]|'
-ci_sanitize_tests+='(contact_block|rccm_pull|interface_declarations)_test_np1|'
+ci_sanitize_tests+='(contact_block|rccm_pull|interface_declarations|path_following)_test_np1|'
 ci_sanitize_tests+='fuzz_corpus_(yaml|msh)|cli_check_.*|sanitize_leak_is_reported_np1)$'
 
 sanitized() {

@@ -86,7 +86,12 @@ std::string stepping_summary(const RunSummary& s, const std::string& program) {
          std::to_string(s.traced_increments) + " traced), " +
          plural(s.cutbacks, "cut-back", "cut-backs") + ", " +
          plural(s.staggered_increments, "jump", "jumps") + "; " + seconds_text(s.failed_seconds) +
-         " in failed attempts" + energy_summary(s);
+         " in failed attempts" +
+         (s.abandoned_paths > 0
+              ? "; path-following gave up in " + plural(s.abandoned_paths, "stage", "stages") +
+                    " (a traced step failed at every halving) and ramped on"
+              : "") +
+         energy_summary(s);
 }
 
 std::string energy_balance_summary(const RunSummary& s, const std::string& program) {

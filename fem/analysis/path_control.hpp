@@ -40,6 +40,15 @@ public:
   bool forward(const PathStep& step) const;
   /// λ would pass 1: ramp to the end of the stage from here.
   void finish() { finished_ = true, mode_ = Mode::Ramp; }
+  /// Every halving of a traced step failed other than for want of softening (a plastic bulk
+  /// dissipates what the adhesion's constraint does not see, and Δλ runs away): the ramp
+  /// carries the rest of the stage, its cut-backs and staggered fallback included. False if
+  /// the stage already ramps to its end.
+  bool abandon() {
+    if (finished_) return false;
+    finish();
+    return true;
+  }
   /// A ramp increment failed: true if dissipation control takes over (the stage asks for
   /// it, an interface has adhesion left, and an earlier increment gives a direction).
   bool switch_on_failure();

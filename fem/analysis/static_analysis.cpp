@@ -182,6 +182,15 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
             continue;
           }
           if (energy_retreat(attempt_start)) continue;
+          if (path.abandon()) {
+            // The ramp, from where it failed (halved once more) or whole if it had converged
+            // and handed over for releasing too much; a run that the traced steps would end.
+            level = ramp_failed_at >= 0 ? std::min(ramp_failed_at + 1, max_cutbacks) : 0;
+            ramp_failed_at = -1;
+            ++summary.abandoned_paths;
+            failed_seconds += seconds_since(attempt_start);
+            continue;
+          }
           throw IncrementFailure(
               path.failure_message(s, step + 1, done, level, log.history, log.failure),
               residual_history_text(log.history));

@@ -103,6 +103,7 @@ struct RunSummary {
   int cutbacks = 0;             ///< failed attempts, each followed by a halving
   int sub_increments = 0;       ///< converged increments between planned and asked levels
   int traced_increments = 0;    ///< increments traced by path-following
+  int abandoned_paths = 0;      ///< stages ramped on after a traced step failed every halving
   int energy_halvings = 0;      ///< converged attempts redone for the energy_tolerance
   int over_energy_budget = 0;   ///< increments kept over the energy_tolerance (flagged)
   /// Largest |balance error| / work put in after an increment of a stage with an

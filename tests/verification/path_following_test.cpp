@@ -109,6 +109,60 @@ INSTANTIATE_TEST_SUITE_P(BothControlsBothBulkPaths, TracedSnapBack,
                          ::testing::Combine(::testing::Values("dissipation", "arc_length"),
                                             ::testing::Bool()));
 
+// A hardening von Mises block on an elastic base, joined by a rate-independent RCCM joint,
+// pressed, then sheared under dissipation control (inputs/examples/restart_within_stage.yaml
+// at viscosity 0). The block yields: the plastic bulk dissipates what the adhesion's
+// constraint does not see, and the traced shear step that follows two converged ones fails at
+// every halving (Δλ runs away, the singular Jacobian). The stage gives up path-following and
+// ramps on (PathControl::abandon) where the run used to stop; every step's energy balance
+// (plastic and adhesion dissipation) holds to round-off, and the run ends at the shear's
+// λ = 1.
+TEST(PathFollowingPlasticBulk, AStageWhoseTracedStepsAllFailRampsOn) {
+  const std::string text =
+      "kinematics: plane_strain\n"
+      "mesh:\n  blocks:\n    cell: quad4\n"
+      "    x: {breaks: [0, 1.0], cells: [4]}\n"
+      "    y: {breaks: [-0.5, 0, 0.5], cells: [2, 3]}\n"
+      "    regions: [base, block]\n"
+      "materials:\n"
+      "  base: {type: linear_elastic, youngs_modulus: 1.0e5, poissons_ratio: 0.3}\n"
+      "  block: {type: von_mises, youngs_modulus: 2.0e4, poissons_ratio: 0.25, yield_stress: "
+      "30.0, hardening_modulus: 2.0e3}\n"
+      "linear_solver: {method: direct}\n"
+      "interfaces:\n  - name: joint\n    between: [base, block]\n    law: rccm\n"
+      "    parameters: {normal_stiffness: 1.0e6, tangential_stiffness: 1.0e6, "
+      "decohesion_energy: 1.0e-4, friction_coefficient: 0.3, adhesion_viscosity: 0.0}\n"
+      "contact_solver: {type: generalized_newton, tolerance: 1.0e-13, max_iterations: 30}\n"
+      "stages:\n"
+      "  - name: press\n    increments: 3\n    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: top, component: x, value: 0}\n"
+      "      - {set: top, component: y, value: -2.0e-3}\n"
+      "  - name: shear\n    increments: 4\n    control: dissipation\n"
+      "    boundary_conditions:\n"
+      "      - {set: bottom, component: x, value: 0}\n"
+      "      - {set: bottom, component: y, value: 0}\n"
+      "      - {set: top, component: x, value: 6.0e-3}\n"
+      "      - {set: top, component: y, value: -2.0e-3}\n";
+  const Model model = bipot::test::model_from_text(text, "plastic_block.yaml");
+  StaticAnalysis analysis(model);
+  double worst = 0, last_lambda = 0;
+  std::string last_stage;
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    worst = std::max(worst, std::abs(r.energy.relative_error()));
+    last_stage = r.stage, last_lambda = r.load_factor;
+  });
+  std::printf("%d increments, %d traced, %d stage(s) abandoned, worst balance %.3g\n",
+              summary.steps, summary.traced_increments, summary.abandoned_paths, worst);
+  EXPECT_GE(summary.traced_increments, 1);
+  EXPECT_EQ(summary.abandoned_paths, 1);
+  EXPECT_EQ(summary.staggered_increments, 0);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_EQ(last_stage, "shear");
+  EXPECT_DOUBLE_EQ(last_lambda, 1.0);
+}
+
 // The column's input with the law RCCM without its closed-form springs' work
 // (tests/support/rccm_by_rule.hpp), and the catalogue that has it: the ledger then
 // integrates that work by its quadrature, as for a viscous law.

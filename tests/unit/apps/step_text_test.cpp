@@ -36,6 +36,21 @@ TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
   EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
 }
 
+// A stage whose path-following gave up (a traced step failed at every halving) and ramped on
+// is counted at the end; a run without says nothing of it.
+TEST(SteppingSummary, CountsStagesWherePathFollowingGaveUp) {
+  RunSummary s;
+  s.steps = 13;
+  s.traced_increments = 2;
+  EXPECT_EQ(stepping_summary(s, "app").find("gave up"), std::string::npos);
+  s.abandoned_paths = 1;
+  const std::string text = stepping_summary(s, "app");
+  EXPECT_NE(text.find("path-following gave up in 1 stage (a traced step failed at every "
+                      "halving) and ramped on"),
+            std::string::npos)
+      << text;
+}
+
 // Every run closes with its energy balance's worst error and where it was; above 1e-6 it says
 // what makes such an error and what reduces it.
 TEST(EnergyBalanceSummary, NamesTheWorstStepAndAdvisesAboveOneInAMillion) {
