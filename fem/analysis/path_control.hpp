@@ -53,8 +53,9 @@ public:
   /// it, an interface has adhesion left, and an earlier increment gives a direction).
   bool switch_on_failure();
   /// A traced step found no pair softening within reach (IncrementLog::nothing_softens: the
-  /// ramp failed for the bulk's sake, e.g. a plastic soil): back to the ramp, which cuts
-  /// back instead of handing over again until an increment converges.
+  /// ramp failed for the bulk's sake, e.g. a plastic soil): back to the ramp, which until an
+  /// increment converges has the solver's own iteration limit (ramp_iterations()) and cuts
+  /// back instead of handing over again.
   void decline() { mode_ = Mode::Ramp, declined_ = true; }
   /// The Newton iterations a ramp increment gets (0: the contact solver's own limit). Where a
   /// failure would hand over to dissipation control, a ramp increment slower than one that

@@ -164,14 +164,16 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
         if (!converged) {
           u = u_begin;
           // The traced step found no pair softening within reach (the ramp had failed for the
-          // bulk's sake, e.g. a plastic soil): the ramp takes the increment back, halved once
-          // more than where it failed. Halving the traced step would not help: its predictor
-          // is the ramp's step whatever its length when the last increment released nothing.
-          if (log.nothing_softens && ramp_failed_at >= 0 && ramp_failed_at < max_cutbacks) {
+          // bulk's sake, e.g. a plastic soil): the ramp takes the increment back at the length
+          // it failed with, now with the contact solver's own iteration limit rather than the
+          // hand-over's (ramp_iterations()), and cuts back from there as a ramp alone would:
+          // where nothing softens, dissipation control changes nothing of the run. Halving the
+          // traced step would not help: its predictor is the ramp's step whatever its length
+          // when the last increment released nothing.
+          if (log.nothing_softens && ramp_failed_at >= 0) {
             path.decline();
-            level = ramp_failed_at + 1;
+            level = ramp_failed_at;
             ramp_failed_at = -1;
-            ++summary.cutbacks;
             failed_seconds += seconds_since(attempt_start);
             continue;
           }
@@ -183,9 +185,10 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           }
           if (energy_retreat(attempt_start)) continue;
           if (path.abandon()) {
-            // The ramp, from where it failed (halved once more) or whole if it had converged
-            // and handed over for releasing too much; a run that the traced steps would end.
-            level = ramp_failed_at >= 0 ? std::min(ramp_failed_at + 1, max_cutbacks) : 0;
+            // The ramp, at the length it failed with under the hand-over's iteration limit
+            // (now with the solver's own) or whole if it had converged and handed over for
+            // releasing too much; a run that the traced steps would end.
+            level = std::max(ramp_failed_at, 0);
             ramp_failed_at = -1;
             ++summary.abandoned_paths;
             failed_seconds += seconds_since(attempt_start);

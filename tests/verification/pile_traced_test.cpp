@@ -195,10 +195,11 @@ TEST(PileTraced, BalanceHoldsAtEveryStep) {
 // control, to 25 mm: its ramp fails repeatedly for the soil's sake (at 21.5 mm first) before
 // any pair softens. The traced step it hands over to finds no pair softening
 // (IncrementLog::nothing_softens), so the ramp takes the increment back and cuts back
-// (PathControl::decline), as the ramp alone does; before, the traced step failed as singular
-// at every halving and the run stopped at 21.5 mm. The run must pass through the same equilibria as
-// the ramp alone (the same increments solved the same way: 1e-6), with the energy balance at
-// round-off at every step (plastic dissipation in closed form, rate-independent adhesion).
+// (PathControl::decline) with the solver's own iteration limit, as the ramp alone does;
+// before, the traced step failed as singular at every halving and the run stopped at 21.5 mm. The
+// run must pass through the same equilibria as the ramp alone (the same increments solved the same
+// way: 1e-6), with the energy balance at round-off at every step (plastic dissipation in closed
+// form, rate-independent adhesion).
 TEST(PileTraced, PlasticSoilRampFailuresGoBackToTheRamp) {
   pile::PileSpec spec = pile::read_pile_file(std::string(BIPOT_SOURCE_DIR) +
                                                  "/inputs/pile_pullout/rccm_mohr_coulomb.yaml",
