@@ -155,7 +155,8 @@ TEST(PathFollowingPlasticBulk, AStageWhoseTracedStepsAllFailRampsOn) {
   });
   std::printf("%d increments, %d traced, %d stage(s) abandoned, worst balance %.3g\n",
               summary.steps, summary.traced_increments, summary.abandoned_paths, worst);
-  EXPECT_GE(summary.traced_increments, 1);
+  // How many traced steps converge first is round-off's choice on this edge: 2 at 1 rank,
+  // none at 2 ranks (run by hand), where the first one already fails at every halving.
   EXPECT_EQ(summary.abandoned_paths, 1);
   EXPECT_EQ(summary.staggered_increments, 0);
   EXPECT_LT(worst, 1e-12);
