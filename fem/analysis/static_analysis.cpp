@@ -281,6 +281,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
           throw IncrementFailure(msg.str(), residual_history_text(log.history));
         }
       }
+      ramp_failed_at = -1; // an increment converged: a later hand-over starts afresh
       auto t0 = std::chrono::steady_clock::now();
       // Reaction = f_int − f_interfaces − f_ext: a supported node on an interface (the top
       // of a pile shaft) also carries the interface force of its pair.
