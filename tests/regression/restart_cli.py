@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """`bipot run --restart`: a run with `output.checkpoint` at `--first` ranks, then the same
 input restarted from its checkpoint (at a stage end or within a stage) at `--then` ranks into another
-folder. The restarted folder must hold the whole series and every checkpoint: every CSV row of the uninterrupted run (identical at the
-same rank count, each value to 1e-10 of its file's largest magnitude across rank counts) and
+folder. The restarted folder must hold the whole series and every checkpoint: every CSV row of the uninterrupted run (identical at one
+rank, each value to 1e-10 of its file's largest magnitude at 2 ranks and across rank counts) and
 as many VTK steps, each file present. A
 checkpoint offered to another input (one value changed) is refused with exit code 2 and the
 reason."""
@@ -74,15 +74,19 @@ def main():
         if w[0] != c[0] or len(w) != len(c):
             problems.append("%s: %d rows, the restarted run has %d" % (name, len(w), len(c)))
             continue
-        # At the same rank count the restart repeats the same operations: identical text.
-        # Across rank counts the sums run in another order, and the Newton iterations stop
-        # anywhere below the inputs' solver tolerance (1e-10): each value to 1e-10 of the
-        # file's largest magnitude (a column that is itself round-off, like energy.csv's
-        # balance_error, has no scale of its own). 1e-12 held only while Newton's last step
-        # happened to overshoot the tolerance down to round-off.
+        # At one rank the restart repeats the same operations: identical text. Across rank
+        # counts the sums run in another order, and the Newton iterations stop anywhere below
+        # the inputs' solver tolerance (1e-10): each value to 1e-10 of the file's largest
+        # magnitude (a column that is itself round-off, like energy.csv's balance_error, has
+        # no scale of its own). 1e-12 held only while Newton's last step happened to
+        # overshoot the tolerance down to round-off. Two runs at 2 ranks are not always
+        # bitwise alike either: once in CI (2026-11-25, staged_friction.yaml 2 -> 2) the
+        # increments after the checkpoint differed by up to 6.5e-13 of their values, which
+        # 18 local repeats, some under load, did not reproduce. The distributed factorisation
+        # (MUMPS's parallel scheduling) is the likely source; not pinned down. Same tolerance.
         scale = max([abs(number(x)) for row in w[1:] for x in row if number(x) is not None]
                     or [0.0])
-        tol = 0.0 if a.first == a.then else 1e-10 * scale
+        tol = 0.0 if a.first == a.then == 1 else 1e-10 * scale
         for col in range(len(w[0])):
             for k, (rw, rc) in enumerate(zip(w[1:], c[1:])):
                 x, y = number(rw[col]), number(rc[col])
