@@ -64,6 +64,7 @@ std::string step_flags(const StepReport& r) {
     parts.push_back("output level");
   else if (r.planned_step == 0)
     parts.push_back("sub-increment");
+  if (r.path_abandoned) parts.push_back("path-following gave up: ramped");
   if (r.staggered > 0)
     parts.push_back("jump: staggered");
   else if (r.unstable && r.cutbacks == 0)

@@ -115,6 +115,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
     // a run fail that would have gone on without it.
     int energy_converged_level = -1;
     int ramp_failed_at = -1; // the halving level of the ramp failure that handed over
+    bool abandoned = false;  // path-following gave up during the increment being solved
     bool energy_last_resort = false;
     const auto energy_retreat = [&](std::chrono::steady_clock::time_point attempt_start) {
       if (energy_converged_level < 0 || energy_last_resort) return false;
@@ -190,6 +191,7 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
             // releasing too much; a run that the traced steps would end.
             level = std::max(ramp_failed_at, 0);
             ramp_failed_at = -1;
+            abandoned = true;
             ++summary.abandoned_paths;
             failed_seconds += seconds_since(attempt_start);
             continue;
@@ -357,6 +359,8 @@ RunSummary StaticAnalysis::Impl::run(const std::function<void(const StepReport&)
       rep.step = ++step;
       rep.steps = stage.increments;
       rep.traced = path.traced_last();
+      rep.path_abandoned = abandoned;
+      abandoned = false;
       rep.dissipation = path.last_dissipation();
       rep.energy = energy->totals();
       rep.energy_halvings = energy_halvings;

@@ -49,6 +49,9 @@ struct StepReport {
   /// (after a cut-back, the sub-increments end exactly on the next planned level).
   int planned_step = 0;
   bool stage_end = false; ///< the last increment of the stage (load factor 1)
+  /// Path-following gave up on this increment (a traced step failed at every halving): it
+  /// and the rest of its stage are ramped (RunSummary::abandoned_paths).
+  bool path_abandoned = false;
   /// Ends on a load factor the stage's `output_at` asks for (results and VTK are written).
   bool requested_output = false;
   int global_step = 0;    ///< converged increments so far, 1-based

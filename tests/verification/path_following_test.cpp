@@ -149,8 +149,14 @@ TEST(PathFollowingPlasticBulk, AStageWhoseTracedStepsAllFailRampsOn) {
   StaticAnalysis analysis(model);
   double worst = 0, last_lambda = 0;
   std::string last_stage;
+  int flagged = 0; // increments whose report says path-following gave up on them
   const RunSummary summary = analysis.run([&](const StepReport& r) {
     worst = std::max(worst, std::abs(r.energy.relative_error()));
+    if (r.path_abandoned) {
+      ++flagged;
+      EXPECT_FALSE(r.traced);
+      EXPECT_EQ(r.stage, "shear");
+    }
     last_stage = r.stage, last_lambda = r.load_factor;
   });
   std::printf("%d increments, %d traced, %d stage(s) abandoned, worst balance %.3g\n",
@@ -158,6 +164,7 @@ TEST(PathFollowingPlasticBulk, AStageWhoseTracedStepsAllFailRampsOn) {
   // How many traced steps converge first is round-off's choice on this edge: 2 at 1 rank,
   // none at 2 ranks (run by hand), where the first one already fails at every halving.
   EXPECT_EQ(summary.abandoned_paths, 1);
+  EXPECT_EQ(flagged, 1);
   EXPECT_EQ(summary.staggered_increments, 0);
   EXPECT_LT(worst, 1e-12);
   EXPECT_EQ(last_stage, "shear");

@@ -88,5 +88,14 @@ TEST(StepFlags, TellEnergyHalvingsFromCutBacks) {
   EXPECT_EQ(step_flags(r), "  (1/8 step, 2 of its 3 halvings for the energy)");
 }
 
+// The increment on which path-following gave up says so (the rest of its stage is ramped).
+TEST(StepFlags, FlagTheIncrementWherePathFollowingGaveUp) {
+  StepReport r;
+  r.planned_step = 2;
+  r.path_abandoned = true;
+  r.failed_seconds = 0.5;
+  EXPECT_EQ(step_flags(r), "  (path-following gave up: ramped, 0.50 s in failed attempts)");
+}
+
 } // namespace
 } // namespace bipot::app
