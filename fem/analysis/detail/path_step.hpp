@@ -25,7 +25,6 @@ struct PathStep {
   enum class Kind { ArcLength, Dissipation } kind = Kind::ArcLength;
   Eigen::VectorXd x_prev;              ///< the previous increment on I (direction and predictor)
   double dlambda_prev = 0, length = 0; ///< Δλ_prev; arc_length: L (m)
-  Eigen::VectorXd u0, f0;              ///< dissipation: at the increment's start
   /// A nonlinear bulk's outer iterations: how far I moved in the earlier ones of this
   /// increment (x counts from the current bulk state); empty: none.
   Eigen::VectorXd x_offset;
