@@ -172,8 +172,13 @@ void ResultWriter::write_step(const StepReport& report, const StaticAnalysis& an
     add_flags(report, row);
     rigid_bodies_->write_row(row);
   }
-  const bool due = report.global_step % model_.spec.output.every == 0 || report.stage_end ||
-                   report.requested_output;
+  // `every` counts the plan (and the traced steps), not the sub-increments: halvings, by
+  // cut-backs or by energy_tolerance (thousands on a viscous pile at 1e-6), would otherwise
+  // multiply the VTK series. The CSVs keep every increment.
+  const int every = model_.spec.output.every;
+  const bool due = report.stage_end || report.requested_output ||
+                   (report.planned_step > 0 ? report.planned_step % every == 0
+                                            : report.traced && report.step % every == 0);
   if (rank_ == 0) write_interfaces(report, analysis, due);
   if (!vtk_ || !due) return;
   std::vector<Index> cells;
