@@ -10,6 +10,7 @@ into; a python3 earlier on PATH (pyenv, venv) may lack it. Needs only matplotlib
 import argparse
 import csv
 import os
+import re
 import sys
 import tempfile
 
@@ -100,7 +101,9 @@ def plot_curves(args, Figure):
             raise PlotError(f"{path}: no rows of stage 'pullout'")
         u = [r["head_displacement_mm"] for r in rows]
         force = [r["head_force_kN"] for r in rows]
-        (line,) = ax.plot(u, force, marker=".", label=label)
+        # A dot per step while they can be told apart; a run whose energy_tolerance halves it
+        # into thousands of steps reads better as a line.
+        (line,) = ax.plot(u, force, marker="." if len(rows) <= 300 else None, label=label)
         bad = [r for r in rows if r["unstable"] != 0]
         if bad:
             # Hollow markers in the run's colour: the step converged, but only after cut-backs
@@ -172,7 +175,9 @@ def plot_profiles(args, Figure, colormaps):
     # Beside the panels, not on them: a legend inside would hide the deep end of some curve.
     axes[-1].legend(title="head displacement", fontsize="small", loc="upper left",
                     bbox_to_anchor=(1.02, 1))
-    fig.suptitle(args.title or f"Shaft profiles: {args.results_dir}")
+    # The app plots before it renames its folder from <dir>.running-<pid> to <dir>: name that.
+    shown = re.sub(r"\.running-\d+$", "", args.results_dir.rstrip("/"))
+    fig.suptitle(args.title or f"Shaft profiles: {shown}")
     save_atomically(fig, args.out)
 
 
