@@ -9,7 +9,8 @@ MPI rank. Used by CTest (tests/regression/CMakeLists.txt and pile/CMakeLists.txt
   ends        a run that fails (on one rank only, at 2 ranks) exits non-zero within a time limit;
               without --bad, the app itself is the run (a test driver)
   finite      runs an input and checks that no CSV of its results holds NaN or inf (and, with
-              --no-cutbacks, that no increment needed a cut-back)
+              --no-cutbacks, that no increment needed a cut-back; with --energy-tolerance,
+              that energy.csv's relative_error is within it at every step)
 """
 import argparse
 import csv
@@ -164,6 +165,22 @@ def check_finite(a):
             fail("increments that needed a cut-back (a solver change made the shipped input "
                  "harder; see docs/testing.md):\n" + "\n".join(cut[:20]))
         print("run_safety: no increment needed a cut-back")
+    if a.energy_tolerance is not None:
+        ledgers = [c for c in csvs if os.path.basename(c) == "energy.csv"]
+        if not ledgers:
+            fail(f"no energy.csv under {results}")
+        worst, over = 0.0, []
+        for ledger in ledgers:
+            with open(ledger, newline="") as f:
+                for n, r in enumerate(csv.DictReader(f), start=2):
+                    e = abs(float(r["relative_error"]))
+                    worst = max(worst, e)
+                    if e > a.energy_tolerance:
+                        over.append(f"{ledger}:{n}: stage {r['stage']} step {r['step']}: {e:.3g}")
+        if over:
+            fail(f"energy balance off by more than {a.energy_tolerance:g} of the work put in "
+                 f"at {len(over)} steps:\n" + "\n".join(over[:20]))
+        print(f"run_safety: energy balance within {worst:.2g} of the work put in at every step")
 
 
 def cut_back_rows(path):
@@ -189,6 +206,8 @@ def main():
     p.add_argument("--no-plot", action="store_true", help="pass --no-plot (the pile app)")
     p.add_argument("--no-cutbacks", action="store_true",
                    help="finite: also fail if an increment needed a cut-back")
+    p.add_argument("--energy-tolerance", type=float,
+                   help="finite: also fail if energy.csv's |relative_error| exceeds it at a step")
     p.add_argument("--expect-code", type=int, default=3)
     p.add_argument("--expect", default=".", help="regex the failing run's stderr must match")
     p.add_argument("--expect-files", nargs="*", default=[],

@@ -191,7 +191,7 @@ TEST(PileTraced, BalanceHoldsAtEveryStep) {
   EXPECT_EQ(summary.energy_halvings, 0);
 }
 
-// The pile in Mohr-Coulomb soil (rccm_mohr_coulomb.yaml) at viscosity 0 under dissipation
+// The pile in Mohr-Coulomb soil (rccm_mohr_coulomb.yaml: viscosity 0, dissipation control as shipped)
 // control, to 25 mm: its ramp fails repeatedly for the soil's sake (at 21.5 mm first) before
 // any pair softens. The traced step it hands over to finds no pair softening
 // (IncrementLog::nothing_softens), so the ramp takes the increment back and cuts back
