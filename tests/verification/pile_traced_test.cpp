@@ -191,9 +191,9 @@ TEST(PileTraced, BalanceHoldsAtEveryStep) {
   EXPECT_EQ(summary.energy_halvings, 0);
 }
 
-// The pile in Mohr-Coulomb soil (rccm_mohr_coulomb.yaml: viscosity 0, dissipation control as shipped)
-// control, to 25 mm: its ramp fails repeatedly for the soil's sake (at 21.5 mm first) before
-// any pair softens. The traced step it hands over to finds no pair softening
+// The pile in Mohr-Coulomb soil (rccm_mohr_coulomb.yaml: viscosity 0, dissipation control as
+// shipped), to 25 mm: its ramp fails repeatedly for the soil's sake (at 21.5 mm first)
+// before any pair softens. The traced step it hands over to finds no pair softening
 // (IncrementLog::nothing_softens), so the ramp takes the increment back and cuts back
 // (PathControl::decline) with the solver's own iteration limit, as the ramp alone does;
 // before, the traced step failed as singular at every halving and the run stopped at 21.5 mm. The
