@@ -40,7 +40,7 @@ struct PulloutStage {
   std::string control = "ramp";
   std::optional<double> dissipation_step = std::nullopt; ///< kJ; empty: derived by the analysis
   std::optional<int> max_increments = std::nullopt;      ///< empty: derived by the analysis
-  double energy_tolerance = 0; ///< StageSpec::energy_tolerance (0: no control)
+  double energy_tolerance = 1e-6; ///< StageSpec::energy_tolerance (0: no control)
 };
 
 struct PileSpec {

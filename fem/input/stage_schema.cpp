@@ -30,8 +30,8 @@ ParamSpec& describe_max_increments(ParamSpec& spec) {
 
 ParamSpec& describe_energy_tolerance(ParamSpec& spec) {
   spec.doc = "the run's energy balance error allowed after every increment, as a fraction of "
-             "the work put in; an increment that breaks it is redone in halves (0: no control; "
-             "docs/theory.md, Energy balance)";
+             "the work put in; an increment that breaks it is redone in halves, up to "
+             "max_cutbacks (0: no control; docs/energy_step_control.md)";
   return spec.non_negative().less_than(1.0).because(
       "a fraction of the work put in: 0 turns the control off, 1 or more would allow any "
       "balance");

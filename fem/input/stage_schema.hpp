@@ -46,7 +46,7 @@ template <class P>
 ParamSpec& add_max_increments_key(ParamSchemaOf<P>& schema, std::optional<int> P::*member) {
   return describe_max_increments(schema.integer("max_increments", member, ""));
 }
-/// `energy_tolerance`, defaulted to the member's initializer (0 = no control).
+/// `energy_tolerance`, defaulted to the member's initializer (StageSpec's: 1e-6).
 template <class P>
 ParamSpec& add_energy_tolerance_key(ParamSchemaOf<P>& schema, double P::*member) {
   return describe_energy_tolerance(schema.real("energy_tolerance", member, "", "")).defaulted();

@@ -194,6 +194,8 @@ struct TracedBalance {
 TracedBalance traced_balance(int increments, bool rule) {
   std::string text = input("dissipation");
   text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
+  // The quadrature's own error on the planned steps: no energy control (on by default).
+  text.replace(text.find("    control:"), 0, "    energy_tolerance: 0\n");
   const Model model =
       rule ? bipot::test::model_from_text(by_rule(text), "traced.yaml", catalogue_by_rule())
            : bipot::test::model_from_text(text, "traced.yaml");
@@ -255,9 +257,9 @@ ColumnRun column_run(int increments, double tolerance, const std::string& contro
   text.replace(text.find("increments: 12"), 14, "increments: " + std::to_string(increments));
   // The default max_cutbacks: a shorter step than the column's 1/8 for the energy as well.
   text.replace(text.find("max_cutbacks: 3"), 15, "max_cutbacks: 6");
-  if (tolerance > 0)
-    text.replace(text.find("    control:"), 0,
-                 "    energy_tolerance: " + std::to_string(tolerance) + "\n");
+  // 0 turns the control off (it is on by default).
+  text.replace(text.find("    control:"), 0,
+               "    energy_tolerance: " + std::to_string(tolerance) + "\n");
   const Model model =
       bipot::test::model_from_text(by_rule(text), "traced.yaml", catalogue_by_rule());
   StaticAnalysis analysis(model);

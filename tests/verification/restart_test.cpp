@@ -33,11 +33,13 @@ using test::block_stage;
 const std::string input =
     test::block_on_rccm_joint("{type: linear_elastic, youngs_modulus: 2.0e4, poissons_ratio: 0.25}",
                               "{type: generalized_newton, tolerance: 1.0e-13}") +
-    block_stage("press", 0, -1e-3, "    reset_displacements: true\n") +
-    block_stage("shear", 2e-3, 0) +
+    // The planned increments (12 rows), no energy halvings (on by default).
+    block_stage("press", 0, -1e-3, "    reset_displacements: true\n    energy_tolerance: 0\n") +
+    block_stage("shear", 2e-3, 0, "    energy_tolerance: 0\n") +
     block_stage("shear_more", 6e-3, 0,
+                "    energy_tolerance: 0\n"
                 "    interfaces: {joint: {parameters: {friction_coefficient: 0.5}}}\n") +
-    block_stage("lift", 6e-3, 2e-3);
+    block_stage("lift", 6e-3, 2e-3, "    energy_tolerance: 0\n");
 
 constexpr std::size_t saved_after = 2; // stages
 

@@ -133,8 +133,9 @@ TEST(StagedInterface, BondedInstallationThenRccmEqualsRccmThroughout) {
   const std::string rccm =
       "{normal_stiffness: 1.0e5, tangential_stiffness: 1.0e5, decohesion_energy: 1.0e-4, "
       "friction_coefficient: 0.4, adhesion_viscosity: 0.01, initial_adhesion: 0.8}";
+  // The planned increments compared one by one: no energy halvings (on by default).
   const auto column = [](const std::string& name, double y, const std::string& extra) {
-    return "  - name: " + name + "\n    increments: 4\n" + extra +
+    return "  - name: " + name + "\n    increments: 4\n    energy_tolerance: 0\n" + extra +
            "    boundary_conditions:\n"
            "      - {set: bottom, component: y, value: 0}\n"
            "      - {set: left, component: x, value: 0}\n"
@@ -174,9 +175,12 @@ TEST(StagedInterface, StiffnessChangeIsBookedAndTheNewLawDrivesTheDissipation) {
       test::block_on_rccm_joint(stiff_block, "{type: generalized_newton, tolerance: 1.0e-12}") +
       block_stage("press", 0, -2e-3, "", 2) + block_stage("shear", 2e-3, -2e-3, "", 4) +
       block_stage("stiffer", 2.5e-3, -2e-3,
+                  "    energy_tolerance: 0\n"
                   "    interfaces: {joint: {parameters: {normal_stiffness: 2.0e6, "
                   "tangential_stiffness: 2.0e6, adhesion_viscosity: 1.0}}}\n",
                   2);
+  // The first step of `stiffer` whole (no energy halvings, on by default): adhesion is lost
+  // in it while the new stiffness acts.
   // α = 0.01 up to the switch, 1 after it: β still falls in the first step of `stiffer`.
   const Model model = bipot::test::model_from_text(text, "stiffer.yaml");
   StaticAnalysis analysis(model);

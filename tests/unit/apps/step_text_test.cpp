@@ -32,8 +32,12 @@ TEST(SteppingSummary, EnergyControlPrintsTheWorstErrorOfEnergyCsv) {
   EXPECT_NE(none.find("worst balance error 1.6e-06 of the work put in"), std::string::npos) << none;
   EXPECT_EQ(none.find("6.8e-07"), std::string::npos) << none;
   EXPECT_EQ(none.find("max_cutbacks"), std::string::npos) << none;
-  // A run without the control says nothing of it.
+  // A run without the control says nothing of it; nor does one it never halved (the control
+  // is on by default; the energy balance line gives that run's worst error).
   EXPECT_EQ(stepping_summary(RunSummary{}, "app").find("energy_tolerance"), std::string::npos);
+  RunSummary untouched;
+  untouched.worst_energy_error = untouched.worst_controlled_energy_error = 3.4e-14;
+  EXPECT_EQ(stepping_summary(untouched, "app").find("energy_tolerance"), std::string::npos);
 }
 
 // A stage whose path-following gave up (a traced step failed at every halving) and ramped on

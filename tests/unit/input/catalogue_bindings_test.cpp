@@ -238,7 +238,8 @@ TEST(CatalogueBindings, PulloutSharesTheStageKeys) {
     EXPECT_EQ(pile->summary(), general->summary()) << key;
     EXPECT_EQ(pile->range_reason, general->range_reason) << key;
   }
-  EXPECT_EQ(stage.find("energy_tolerance")->summary().rfind("real, default 0, [0, 1): ", 0), 0u);
+  EXPECT_EQ(stage.find("energy_tolerance")->summary().rfind("real, default 1e-06, [0, 1): ", 0),
+            0u);
 }
 
 } // namespace
