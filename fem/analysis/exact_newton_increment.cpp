@@ -80,15 +80,27 @@ void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, boo
   // A linear bulk (rigid bodies aside: their slaves' rows are transformed) gets its residual
   // from products with K, assembled with K at each refactorisation.
   const bool by_product = ctx_.linear && ctx_.rigid.empty();
+  // A path's prescribed values one load factor further on (R1 below).
+  Constraints ahead;
+  if (inc.path)
+    for (const auto& [d, v] : ctx_.target)
+      ahead.set(d, ctx_.start.at(d) + (lambda + 1.0) * (v - ctx_.start.at(d)) - u[d]);
+  // Assembled by the materials (a nonlinear bulk, rigid bodies): a path's residual one load
+  // factor further on comes from the same local systems (into inc.R1 until below), not from a
+  // second assembly that evaluates every material point again.
+  const bool ahead_in_pass = inc.path && !(by_product && (refactor || bulk_product_.ready()));
   R.set_zero();
+  if (ahead_in_pass) inc.R1->set_zero();
   if (refactor) K.set_zero();
   if (refactor && by_product)
     bulk_product_.assemble(ctx_.solid, u, inc.constraints, K, R);
   else if (by_product && bulk_product_.ready())
     bulk_product_.residual(ctx_.solid, K, u, inc.constraints, R);
   else
-    ctx_.solid.assemble(u, inc.constraints, refactor ? &K : nullptr, R);
+    ctx_.solid.assemble(u, inc.constraints, refactor ? &K : nullptr, R, nullptr,
+                        ahead_in_pass ? &ahead : nullptr, ahead_in_pass ? inc.R1.get() : nullptr);
   R.finish_assembly();
+  if (ahead_in_pass) inc.R1->finish_assembly();
   if (refactor) K.finish_assembly();
   ctx_.add_step_loads(inc.constraints);
   if (!inc.path) return;
@@ -99,17 +111,15 @@ void ExactNewtonIncrement::assemble_bulk_residual(Increment& inc, int outer, boo
   // linearisation.
   const DistributedVector R_lambda = R;
   const DistributedVector F_lambda = F_step;
-  Constraints ahead;
-  for (const auto& [d, v] : ctx_.target)
-    ahead.set(d, ctx_.start.at(d) + (lambda + 1.0) * (v - ctx_.start.at(d)) - u[d]);
   F_step.axpy(1.0, ctx_.F_cur);
   F_step.axpy(-1.0, ctx_.F_prev);
-  R.set_zero();
-  if (by_product && bulk_product_.ready())
+  if (ahead_in_pass) {
+    R.copy(*inc.R1);
+  } else {
+    R.set_zero();
     bulk_product_.residual(ctx_.solid, K, u, ahead, R);
-  else
-    ctx_.solid.assemble(u, ahead, nullptr, R);
-  R.finish_assembly();
+    R.finish_assembly();
+  }
   ctx_.add_step_loads(ahead);
   inc.R1->copy(R);
   inc.R1->axpy(-1.0, R_lambda);

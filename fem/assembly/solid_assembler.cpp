@@ -130,8 +130,9 @@ void SolidAssembler::loop(
 }
 
 void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& constraints,
-                              SparseMatrix* K, DistributedVector& R, SparseMatrix* removed) {
-  std::vector<double> kept;
+                              SparseMatrix* K, DistributedVector& R, SparseMatrix* removed,
+                              const Constraints* ahead, DistributedVector* R_ahead) {
+  std::vector<double> kept, K_ahead, f_ahead;
   std::vector<char> held;
   loop(u, true,
        [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>& K_e) {
@@ -154,6 +155,14 @@ void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& c
                  if (held[a] || held[b]) kept[a * nd + b] = K_e[a * nd + b];
              removed->add_dense(cell_dofs.data(), nd, kept.data());
            }
+         }
+         if (ahead && R_ahead) {
+           // Condensing changes K_e: the second set works on copies.
+           K_ahead.assign(K_e.begin(), K_e.end());
+           f_ahead.assign(f_e.begin(), f_e.end());
+           ahead->condense(cell_dofs.data(), nd, K_ahead.data(), f_ahead.data());
+           for (int a = 0; a < nd; ++a)
+             R_ahead->add(cell_dofs[a], f_ahead[a]);
          }
          constraints.condense(cell_dofs.data(), nd, K_e.data(), f_e.data());
          if (K) K->add_dense(cell_dofs.data(), nd, K_e.data());

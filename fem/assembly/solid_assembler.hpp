@@ -36,9 +36,13 @@ public:
   /// For the total displacement `u` (all global DOFs, replicated): adds the condensed local
   /// systems K_e du = −f_int,e to `K` (if not null) and `R`. `removed` (if not null) receives the
   /// entries of the local matrices that the elimination takes out, those in a constrained row or
-  /// column (LinearBulkResidual rebuilds the residual from them and K).
+  /// column (LinearBulkResidual rebuilds the residual from them and K). `ahead` (if not null,
+  /// with `R_ahead`) is a second set of values on the same constrained DOFs: `R_ahead` gets the
+  /// residual condensed with those, from the same local systems (a path's residual at the
+  /// next load factor, without evaluating the materials again).
   void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
-                DistributedVector& R, SparseMatrix* removed = nullptr);
+                DistributedVector& R, SparseMatrix* removed = nullptr,
+                const Constraints* ahead = nullptr, DistributedVector* R_ahead = nullptr);
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);
