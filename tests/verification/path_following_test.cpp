@@ -48,14 +48,32 @@ std::string with_nonlinear_bulk(std::string text) {
   return text;
 }
 
-// (control, nonlinear bulk)
-class TracedSnapBack : public ::testing::TestWithParam<std::tuple<const char*, bool>> {};
+// The column cut at mid-height into two bodies tied by a `perfect_bonding` joint: the third
+// law in a traced model. The tie adds no compliance, so the closed form is unchanged;
+// interfaces()[0] stays the RCCM bond, now between the base and the lower half.
+std::string with_bonded_joint(std::string text) {
+  const auto swap = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  swap("y: {breaks: [-0.1, 0, 1.0], cells: [1, 2]}\n    regions: [base, column]",
+       "y: {breaks: [-0.1, 0, 0.5, 1.0], cells: [1, 1, 1]}\n    regions: [base, lower, column]");
+  swap("  column: {", "  lower: {type: linear_elastic, youngs_modulus: 1.0e3, poissons_ratio: "
+                      "0.0}\n  column: {");
+  swap("between: [base, column]", "between: [base, lower]");
+  swap("contact_solver:",
+       "  - name: tie\n    between: [lower, column]\n    law: perfect_bonding\ncontact_solver:");
+  return text;
+}
+
+// (control, nonlinear bulk, bonded joint)
+class TracedSnapBack : public ::testing::TestWithParam<std::tuple<const char*, bool, bool>> {};
 
 TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
-  const std::string control = std::get<0>(GetParam());
-  const bool nonlinear = std::get<1>(GetParam());
-  const Model model = bipot::test::model_from_text(
-      nonlinear ? with_nonlinear_bulk(input(control)) : input(control), "traced.yaml");
+  const auto [control, nonlinear, bonded] = GetParam();
+  std::string text = input(control);
+  if (bonded) text = with_bonded_joint(text);
+  if (nonlinear) text = with_nonlinear_bulk(text);
+  const Model model = bipot::test::model_from_text(text, "traced.yaml");
   StaticAnalysis analysis(model);
   double previous_g = 0, largest_stress = 0, smallest_delta_after_peak = top;
   int traced = 0, falling = 0;
@@ -80,7 +98,7 @@ TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
     largest_stress = std::max(largest_stress, stress);
     previous_g = g;
   });
-  if (control == "dissipation") {
+  if (std::string(control) == "dissipation") {
     // The ramp runs up to the limit point (a planned level here: δ* = 0.11 = 11/12 × 0.12)
     // before dissipation control takes over: the peak within 1e-3.
     EXPECT_NEAR(largest_stress, peak, 1e-3 * peak);
@@ -107,7 +125,79 @@ TEST_P(TracedSnapBack, EveryStepLiesOnTheClosedFormCurve) {
 
 INSTANTIATE_TEST_SUITE_P(BothControlsBothBulkPaths, TracedSnapBack,
                          ::testing::Combine(::testing::Values("dissipation", "arc_length"),
-                                            ::testing::Bool()));
+                                            ::testing::Bool(), ::testing::Bool()));
+
+// The column in frictional contact (coulomb_signorini) with its base, pressed: the law that
+// does not soften, traced. The base is elastic and held at its bottom only, so that the
+// interface moves and arc length has a path to measure. In 1D (ν = 0) the stress is
+// E δ / (L + h), h = 0.1 the base's height, at every step.
+std::string pressed_on_coulomb(const std::string& control, bool nonlinear) {
+  std::string text = input(control);
+  const auto swap = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  const std::size_t at = text.find("law: rccm");
+  text.replace(at, text.find('}', at) + 1 - at,
+               "law: coulomb_signorini\n    parameters: {friction_coefficient: 0.3}");
+  swap("{set: base_nodes, component: x", "{set: bottom, component: x");
+  swap("{set: base_nodes, component: y", "{set: bottom, component: y");
+  swap("value: 0.12", "value: -0.12");
+  return nonlinear ? with_nonlinear_bulk(text) : text;
+}
+
+// Bulk linear or not (the two paths of the contact solver).
+class TracedContact : public ::testing::TestWithParam<bool> {};
+
+TEST_P(TracedContact, EveryArcLengthStepLiesOnTheElasticLine) {
+  const bool nonlinear = GetParam();
+  const Model model =
+      bipot::test::model_from_text(pressed_on_coulomb("arc_length", nonlinear), "traced.yaml");
+  StaticAnalysis analysis(model);
+  double last_lambda = 0, worst = 0;
+  int traced = 0;
+  const RunSummary summary = analysis.run([&](const StepReport& r) {
+    const double delta = -top * r.load_factor;
+    const double stress = -analysis.interfaces()[0]->resultant()[1] / width;
+    EXPECT_NEAR(stress, E * delta / (L + 0.1), 1e-8 * E * top) << "step " << r.global_step;
+    EXPECT_EQ(r.staggered, 0);
+    EXPECT_FALSE(r.unstable) << "nothing softens: λ never falls";
+    // Elastic and in full contact: the predictor along the last step is the solution.
+    if (r.traced) {
+      ++traced;
+      EXPECT_LE(r.iterations, 1) << "step " << r.global_step;
+    }
+    worst = std::max(worst, std::abs(r.energy.relative_error()));
+    last_lambda = r.load_factor;
+  });
+  std::printf("coulomb_signorini, arc_length, %s bulk: %d increments, %d traced, worst balance "
+              "%.3g\n",
+              nonlinear ? "nonlinear" : "linear", summary.steps, traced, worst);
+  EXPECT_DOUBLE_EQ(last_lambda, 1.0);
+  EXPECT_GT(traced, 0) << "arc length traces the stage after its first (ramp) step";
+  EXPECT_EQ(summary.traced_increments, traced);
+  EXPECT_LT(worst, 1e-10);
+}
+
+INSTANTIATE_TEST_SUITE_P(BothBulkPaths, TracedContact, ::testing::Bool());
+
+// Dissipation control follows the energy adhesion loss releases: without adhesion the stage
+// stops at its start, naming it and the control that can trace it.
+TEST(TracedContactInput, DissipationControlWithoutAdhesionSaysWhy) {
+  const Model model =
+      bipot::test::model_from_text(pressed_on_coulomb("dissipation", false), "traced.yaml");
+  StaticAnalysis analysis(model);
+  try {
+    analysis.run([](const StepReport&) { ADD_FAILURE() << "no step should run"; });
+    ADD_FAILURE() << "ran";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("stage 'pull': control dissipation follows the energy "
+                                         "adhesion loss releases, and no interface has adhesion "
+                                         "left to lose"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("use control: arc_length"), std::string::npos);
+  }
+}
 
 // A hardening von Mises block on an elastic base, joined by a rate-independent RCCM joint,
 // pressed, then sheared under dissipation control (inputs/examples/restart_within_stage.yaml
@@ -338,6 +428,11 @@ TEST(PathFollowingInput, BadControlsAreLocated) {
   std::string still = input("arc_length");
   still.replace(still.find("value: 0.12"), 11, "value: 0");
   expect_input_error(still, "nothing to scale");
+  // Only ties: no interface unknowns for a constraint to measure, nothing that softens.
+  std::string tied = input("arc_length");
+  const std::size_t at = tied.find("law: rccm");
+  tied.replace(at, tied.find('}', at) + 1 - at, "law: perfect_bonding");
+  expect_input_error(tied, "no interface with a contact law (perfect_bonding only, or none)");
 }
 
 // `energy_tolerance` out of [0, 1): at its key, with the range (describe_energy_tolerance()).
