@@ -31,8 +31,11 @@ private:
   /// factorisation or the solve fails.
   bool newton_step(IncrementLog& log, bool matrix_rebuilt);
   /// u += s du on the free DOFs (the prescribed ones take the whole step), s from the
-  /// backtracking line search on ‖R‖ when `damp`, else 1.
-  void move(const std::vector<bool>& prescribed, double norm, double dtau, bool damp);
+  /// backtracking line search on ‖R‖ when `damp`, else 1. True when it took the full step
+  /// after assembling the system there (for the held constraints; `rebuilt_ahead`: whether K
+  /// was rebuilt), which the next iteration then uses as it is.
+  bool move(const std::vector<bool>& prescribed, double norm, double dtau, bool damp,
+            bool& rebuilt_ahead);
 
   IncrementContext& ctx_;
 };
