@@ -47,7 +47,7 @@ double IncrementContext::free_norm(const DistributedVector& v,
 double IncrementContext::residual_norm(const std::vector<double>& trial, double dtau,
                                        const Constraints& constraints) {
   R.set_zero();
-  solid.assemble(trial, constraints, nullptr, R);
+  solid.residual(trial, constraints, R);
   for (const auto& ia : interfaces) {
     ia->evaluate(trial, dtau);
     ia->add_to_system(constraints, nullptr, R);

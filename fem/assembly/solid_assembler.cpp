@@ -172,6 +172,20 @@ void SolidAssembler::assemble(const std::vector<double>& u, const Constraints& c
   if (rigid_ && K) rigid_->add_inactive_rows(R.distribution(), *K);
 }
 
+void SolidAssembler::residual(const std::vector<double>& u, const Constraints& held,
+                              DistributedVector& R) {
+  loop(u, false,
+       [&](std::vector<Index>& cell_dofs, std::vector<double>& f_e, std::vector<double>&) {
+         for (auto& v : f_e)
+           v = -v;
+         if (rigid_) rigid_->distribute(cell_dofs, f_e, nullptr);
+         const int nd = static_cast<int>(cell_dofs.size());
+         held.condense(cell_dofs.data(), nd, f_e.data());
+         for (int a = 0; a < nd; ++a)
+           R.add(cell_dofs[a], f_e[a]);
+       });
+}
+
 void SolidAssembler::internal_force(const std::vector<double>& u, DistributedVector& f,
                                     int region) {
   region_filter_ = region;

@@ -43,6 +43,10 @@ public:
   void assemble(const std::vector<double>& u, const Constraints& constraints, SparseMatrix* K,
                 DistributedVector& R, SparseMatrix* removed = nullptr,
                 const Constraints* ahead = nullptr, DistributedVector* R_ahead = nullptr);
+  /// What assemble() adds to `R` when every constrained value is zero (`held`: DOFs that keep
+  /// their value, a line search's trial): their rows zeroed. Without the tangent's products,
+  /// which a residual does not need.
+  void residual(const std::vector<double>& u, const Constraints& held, DistributedVector& R);
   /// Adds the unconstrained internal force f_int(u) to `f` (reactions); with `region` ≥ 0,
   /// only that region's cells (the force a body's cells exert on shared nodes).
   void internal_force(const std::vector<double>& u, DistributedVector& f, int region = -1);

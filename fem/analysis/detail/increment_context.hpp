@@ -76,7 +76,7 @@ struct IncrementContext {
   /// residual.
   double free_norm(const DistributedVector& v, const Constraints& constraints) const;
   /// ‖R‖ at a trial displacement for the current multipliers (a line search's merit). Uses R
-  /// as scratch; no matrix.
+  /// as scratch; no matrix. `constraints` hold their DOFs (zero values, IncrementContext::held).
   double residual_norm(const std::vector<double>& trial, double dtau,
                        const Constraints& constraints);
   /// The prescribed DOFs, flagged over all DOFs.
