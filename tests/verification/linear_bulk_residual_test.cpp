@@ -4,7 +4,8 @@
 // SolidAssembler::assemble(u, c, nullptr, R) on every row (free rows −f_int(u + du_c), the
 // constrained ones diag(K) du_c), in 2D, axisymmetric and 3D, at 1 and 2 ranks; and again
 // after the initial stress changed. So does the unconstrained internal force of every row
-// (the reactions), which is refused for supports other than K's.
+// (the reactions), which is refused for supports other than K's. And SolidAssembler::residual
+// (a line search's trial, the constrained DOFs held) equals the loop with those held values.
 #include "fem/assembly/constraints.hpp"
 #include "fem/assembly/dof_map.hpp"
 #include "fem/assembly/linear_bulk_residual.hpp"
@@ -139,6 +140,21 @@ TEST_P(LinearBulkResidualTest, EqualsTheCellLoop) {
     EXPECT_LE(f_diff, 1e-12 * scale) << "round " << round << ": " << f_diff << " of " << scale;
     EXPECT_GT(scale, 1.0);
   }
+  // A line search's trial residual (SolidAssembler::residual: the constrained DOFs held, no
+  // tangent products) is the cell loop's residual for those held values, exactly.
+  Constraints held;
+  for (const auto& kv : constraints.values())
+    held.set(kv.first, 0.0);
+  DistributedVector by_assemble(dist), by_residual(dist);
+  by_assemble.set_zero();
+  solid.assemble(u, held, nullptr, by_assemble);
+  by_assemble.finish_assembly();
+  by_residual.set_zero();
+  solid.residual(u, held, by_residual);
+  by_residual.finish_assembly();
+  double held_scale = 0;
+  EXPECT_EQ(largest_difference(by_residual, by_assemble, &held_scale), 0.0);
+  EXPECT_GT(held_scale, 1.0);
   // Supports other than those K was assembled with: refused, nothing added.
   Constraints fewer = constraints;
   fewer.clear();
