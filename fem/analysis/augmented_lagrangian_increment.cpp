@@ -93,38 +93,41 @@ bool AugmentedLagrangianIncrement::move(const std::vector<bool>& prescribed, dou
   std::vector<double>& u = ctx_.u;
   std::vector<double> du_all = ctx_.du.gather_all();
   ctx_.rigid.follow(du_all); // the rigid bodies' slaves move with their reference nodes
-  // The merit is the free-DOF residual: constrained DOFs take their whole (prescribed)
-  // step, so their rows are eliminated as in the iteration itself.
-  const Constraints fixed = ctx_.held();
-  const std::vector<double> u_now = damp ? u : std::vector<double>();
-  for (std::size_t i = 0; i < u.size(); ++i)
-    u[i] += 1.0 * du_all[i];
-  if (!damp) return false;
-  // A nonlinear bulk: the full step is tried by assembling the next iteration's system there
-  // (K with R): most full steps are taken, and that iteration then starts from it instead of
-  // running every material point's return again at the same state (the 100k-DOF footing:
-  // assembly 38.4 -> 31.9 s, the same 140 iterations). A linear bulk with contact rebuilds K
-  // only when an interface's tangent changed, which a rejected trial would leave in K: not
-  // there. (Tried on generalized_newton's outer loop as well, with K and a path's R1: the
-  // Mohr-Coulomb pile's assembly went from 39 to 44 s, so it is not done there.)
-  double at_full = -1.0;
-  if (!ctx_.linear) {
-    rebuilt_ahead = assemble(fixed, dtau, false);
-    at_full = ctx_.R.norm2();
-    if (at_full < (1.0 - 1e-4) * norm) return true; // backtracking_step's test at the full step
+  double step = 1.0;
+  if (damp) {
+    // The merit is the free-DOF residual: constrained DOFs take their whole (prescribed)
+    // step, so their rows are eliminated as in the iteration itself.
+    const Constraints fixed = ctx_.held();
+    double at_full = -1.0;
+    if (!ctx_.linear) {
+      // A nonlinear bulk: the full step is tried by assembling the next iteration's system
+      // there (K with R): most full steps are taken, and that iteration then starts from it
+      // instead of running every material point's return again at the same state (the
+      // 100k-DOF footing: assembly 38.4 -> 31.9 s, the same 140 iterations). A linear bulk
+      // with contact rebuilds K only when an interface's tangent changed, which a rejected
+      // trial would leave in K: not there. (Tried on generalized_newton's outer loop as well,
+      // with K and a path's R1: the Mohr-Coulomb pile's assembly went from 39 to 44 s, so it
+      // is not done there.)
+      const std::vector<double> u_now = u;
+      for (std::size_t i = 0; i < u.size(); ++i)
+        u[i] += du_all[i];
+      rebuilt_ahead = assemble(fixed, dtau, false);
+      at_full = ctx_.R.norm2();
+      if (at_full < (1.0 - 1e-4) * norm) return true; // backtracking_step's test at the full step
+      u = u_now;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<double> trial(u.size());
+    step = backtracking_step(
+        norm,
+        [&](double s) {
+          for (std::size_t i = 0; i < u.size(); ++i)
+            trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
+          return ctx_.residual_norm(trial, dtau, fixed);
+        },
+        at_full); // if no trial did better, the full step, assembled again next
+    ctx_.summary.assembly_seconds += seconds_since(t0);
   }
-  u = u_now;
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<double> trial(u.size());
-  const double step = backtracking_step(
-      norm,
-      [&](double s) {
-        for (std::size_t i = 0; i < u.size(); ++i)
-          trial[i] = u[i] + (prescribed[i] ? 1.0 : s) * du_all[i];
-        return ctx_.residual_norm(trial, dtau, fixed);
-      },
-      at_full); // if no trial did better, the full step, assembled again next
-  ctx_.summary.assembly_seconds += seconds_since(t0);
   for (std::size_t i = 0; i < u.size(); ++i)
     u[i] += (prescribed[i] ? 1.0 : step) * du_all[i];
   return false;
