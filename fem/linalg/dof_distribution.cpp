@@ -17,6 +17,8 @@ DofDistribution::DofDistribution(Index num_nodes, int dofs_per_node, int rank, i
     throw Error("DofDistribution: invalid arguments (num_nodes " + std::to_string(num_nodes) +
                 ", dofs_per_node " + std::to_string(dofs_per_node) + ", rank " +
                 std::to_string(rank) + " of " + std::to_string(size) + ")");
+  first_owned_dof_ = first_node_of(rank) * dofs_per_node;
+  num_owned_dofs_ = (first_node_of(rank + 1) - first_node_of(rank)) * dofs_per_node;
 }
 
 Index DofDistribution::first_node_of(int r) const {

@@ -27,10 +27,10 @@ public:
 
   /// First node owned by rank `r`; first_node_of(size()) == num_nodes().
   Index first_node_of(int r) const;
-  Index first_owned_node() const { return first_node_of(rank_); }
-  Index num_owned_nodes() const { return first_node_of(rank_ + 1) - first_node_of(rank_); }
-  Index first_owned_dof() const { return first_owned_node() * dofs_per_node_; }
-  Index num_owned_dofs() const { return num_owned_nodes() * dofs_per_node_; }
+  Index first_owned_node() const { return first_owned_dof_ / dofs_per_node_; }
+  Index num_owned_nodes() const { return num_owned_dofs_ / dofs_per_node_; }
+  Index first_owned_dof() const { return first_owned_dof_; }
+  Index num_owned_dofs() const { return num_owned_dofs_; }
 
   /// Rank owning `node` (0 <= node < num_nodes()).
   int owner_of_node(Index node) const;
@@ -38,7 +38,7 @@ public:
   int owner_of_dof(Index dof) const { return owner_of_node(dof / dofs_per_node_); }
   /// Whether the calling rank owns `dof`.
   bool owns_dof(Index dof) const {
-    return dof >= first_owned_dof() && dof < first_owned_dof() + num_owned_dofs();
+    return dof >= first_owned_dof_ && dof < first_owned_dof_ + num_owned_dofs_;
   }
 
   bool operator==(const DofDistribution& o) const {
@@ -52,6 +52,10 @@ private:
   int dofs_per_node_;
   int rank_;
   int size_;
+  // The owned block, kept: assembly asks for it once per matrix entry, and first_node_of()
+  // costs two 64-bit divisions (3-4 % of the Mohr-Coulomb pile's run time when recomputed).
+  Index first_owned_dof_;
+  Index num_owned_dofs_;
 };
 
 } // namespace bipot
