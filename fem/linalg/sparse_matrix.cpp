@@ -60,6 +60,7 @@ SparseMatrix::Impl::Impl(const DofDistribution& d, const SparsityPattern& patter
     graph->insertLocalIndices(row, Teuchos::ArrayView<const int>(cols.data(), cols.size()));
   });
   graph->fillComplete(row_map, row_map);
+  local_graph = graph->getLocalGraphHost();
   matrix = Teuchos::rcp(new detail::CrsMatrix(graph));
   ghost_values.assign(layout.ghost_cols().size(), 0.0);
 }
@@ -89,6 +90,9 @@ void SparseMatrix::set_zero() {
   auto& m = *impl_->matrix;
   if (m.isFillComplete()) m.resumeFill();
   m.setAllToScalar(0.0);
+  // A view of host memory (the Serial node); taken again at every assembly so that nothing
+  // relies on Tpetra keeping the same storage across fillComplete() and resumeFill().
+  impl_->values = m.getLocalValuesView().data();
   std::fill(impl_->ghost_values.begin(), impl_->ghost_values.end(), 0.0);
   impl_->assembling = true;
 }
@@ -105,30 +109,17 @@ void SparseMatrix::add_block(const Index* rows, int n_rows, const Index* cols, i
     if (row < 0) continue;
     const double* row_values = values + static_cast<std::size_t>(i) * n_cols;
     if (row >= first && row < first + n_owned) {
-      im.scratch_cols.clear();
-      im.scratch_values.clear();
+      // The row's local columns are ascending (the graph is fill-complete).
+      const auto lr = static_cast<std::size_t>(row - first);
+      const int* begin = im.local_graph.entries.data() + im.local_graph.row_map(lr);
+      const int* end = im.local_graph.entries.data() + im.local_graph.row_map(lr + 1);
+      double* row_entries = im.values + im.local_graph.row_map(lr);
       for (int j = 0; j < n_cols; ++j) {
         if (cols[j] < 0) continue;
         const int lc = layout.local_column(cols[j]);
-        if (lc < 0) throw_not_in_pattern(row, cols[j]);
-        im.scratch_cols.push_back(lc);
-        im.scratch_values.push_back(row_values[j]);
-      }
-      const int n = static_cast<int>(im.scratch_cols.size());
-      const int done =
-          im.matrix->sumIntoLocalValues(static_cast<int>(row - first), n, im.scratch_values.data(),
-                                        im.scratch_cols.data(), false);
-      if (done != n) {
-        // Some column of this row is in the column map but not in this row: find it.
-        for (int j = 0; j < n_cols; ++j) {
-          const int lc = cols[j] < 0 ? -1 : layout.local_column(cols[j]);
-          if (lc < 0) continue;
-          const double zero = 0.0;
-          if (im.matrix->sumIntoLocalValues(static_cast<int>(row - first), 1, &zero, &lc, false) !=
-              1)
-            throw_not_in_pattern(row, cols[j]);
-        }
-        throw Error("SparseMatrix: sumIntoLocalValues failed on row " + std::to_string(row));
+        const int* at = std::lower_bound(begin, end, lc);
+        if (lc < 0 || at == end || *at != lc) throw_not_in_pattern(row, cols[j]);
+        row_entries[at - begin] += row_values[j];
       }
       continue;
     }
