@@ -82,7 +82,10 @@ void ElementValues::reinit(const double* coords, Index cell) {
           J(i, j) += coords[3 * a + i] * dN[a * dim_ + j];
       }
     }
-    const double det = J.determinant();
+    // One factorisation for both det J and J⁻¹: what J.determinant() and J.inverse() each
+    // compute for a matrix of run-time size, so the values are the same to the bit.
+    const Eigen::PartialPivLU<Mat> lu(J);
+    const double det = lu.determinant();
     // Scale-free degeneracy test: det J relative to the volume of the box spanned by the
     // Jacobian's columns (equal when the columns are orthogonal).
     double scale = 1;
@@ -91,7 +94,7 @@ void ElementValues::reinit(const double* coords, Index cell) {
     if (!(det > 1e-12 * scale))
       throw Error(cell_label(cell, type_) + " is inverted or degenerate: det J = " + num(det) +
                   " at quadrature point " + std::to_string(q) + " " + format_point(x));
-    const Mat Jinv = J.inverse();
+    const Mat Jinv = lu.inverse();
     // ∂N_a/∂x_i = Σ_j ∂N_a/∂ξ_j (J⁻¹)_ji.
     double* g = &dNdx_[q * nn_ * dim_];
     for (int a = 0; a < nn_; ++a)
