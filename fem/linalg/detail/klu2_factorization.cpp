@@ -51,6 +51,8 @@ public:
     solver_->numericFactorization();
   }
 
+  const char* method() const override { return "LU"; }
+
   void solve(const double* b, double* x) override {
     const std::size_t n = structure_->size();
     { // host views released before Amesos2 touches the vectors

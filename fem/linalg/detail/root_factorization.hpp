@@ -28,6 +28,9 @@ public:
   virtual void factorize(const std::vector<double>& values) = 0;
   /// x = A⁻¹ b for vectors of length n.
   virtual void solve(const double* b, double* x) = 0;
+  /// The factorisation of the last factorize(): "LU", "LDL^T" (symmetric, with pivoting) or
+  /// "Cholesky-type LDL^T" (positive definite, no pivoting).
+  virtual const char* method() const = 0;
 };
 
 /// MUMPS multifrontal LU with the ordering MUMPS chooses (mumps_factorization.cpp); its

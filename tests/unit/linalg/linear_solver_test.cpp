@@ -364,17 +364,16 @@ TEST(LinearSolver, ThreeComponentChainWith3dRigidBodyModes) {
             1e-8);
 }
 
-// The two LU packages on a nonsymmetric matrix (the one-way tie, as a friction tangent):
-// cond_2 <= 4.4e3 x 1.25/0.75 ~ 7.3e3, so two backward-stable solutions (relative
-// backward error ~ 1e-16 x growth) are within ~1e-12 of each other; 1e-11 leaves room for
-// pivot growth. The explicit residual is checked too, independently of either package: it is
-// ~ 1e-16 ||A|| ||x|| / ||b|| ~ 1e-16 x 500 x 0.04 / 0.01 = 2e-13 (measured 2.8e-13).
-TEST(LinearSolver, MumpsAndKlu2AgreeOnANonsymmetricMatrix) {
-  Chain chain;
-  chain.one_way_tie = true;
+// MUMPS and KLU2 on the chain with element stiffnesses `stiffness`: two backward-stable
+// solutions (relative backward error ~ 1e-16 x growth) of a matrix with cond_2 below ~1e4 are
+// within ~1e-12 of each other; 1e-11 leaves room for pivot growth. The explicit residual is
+// checked too, independently of either package: it is ~ 1e-16 ||A|| ||x|| / ||b|| ~ 1e-16 x
+// 500 x 0.04 / 0.01 = 2e-13 (measured 2.8e-13 on the nonsymmetric one).
+void expect_mumps_agrees_with_klu2(const Chain& chain,
+                                   const std::function<double(int)>& stiffness) {
   const auto dist = chain.distribution();
   SparseMatrix A(dist, chain.pattern(dist));
-  chain.assemble(A, 1.0, [](int e) { return 1.0 + 0.25 * std::sin(e); });
+  chain.assemble(A, 1.0, stiffness);
   DistributedVector b(dist), xm(dist), xk(dist), r(dist);
   chain.assemble_rhs(b);
   LinearSolver mumps(options({"direct", "none", "mumps"}));
@@ -389,6 +388,23 @@ TEST(LinearSolver, MumpsAndKlu2AgreeOnANonsymmetricMatrix) {
   r.scale(-1.0);
   r.axpy(1.0, b);
   EXPECT_LE(r.norm2() / b.norm2(), 1e-12);
+}
+
+// A nonsymmetric matrix (the one-way tie, as a friction tangent): cond_2 <= 4.4e3 x 1.25/0.75
+// ~ 7.3e3.
+TEST(LinearSolver, MumpsAndKlu2AgreeOnANonsymmetricMatrix) {
+  Chain chain;
+  chain.one_way_tie = true;
+  expect_mumps_agrees_with_klu2(chain, [](int e) { return 1.0 + 0.25 * std::sin(e); });
+}
+
+// A symmetric indefinite matrix (one spring of negative stiffness, as a softening tangent
+// gives; cond_2 = 4.8e3 and one negative eigenvalue, numpy on the same matrix): MUMPS'
+// factorisation without pivoting meets a negative pivot and is redone with pivoting
+// (mumps_factorization_test has the kinds); gathered from 2 ranks too, whose rows come in
+// another column order.
+TEST(LinearSolver, MumpsSolvesASymmetricIndefiniteMatrixAsKlu2Does) {
+  expect_mumps_agrees_with_klu2(Chain(), [](int e) { return e == 37 ? -0.4 : 1.0; });
 }
 
 // A singular matrix (all entries zero) must fail on every rank with the package named, not

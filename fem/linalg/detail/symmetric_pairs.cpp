@@ -1,0 +1,67 @@
+#include "fem/linalg/detail/symmetric_pairs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace bipot::detail {
+
+SymmetricPairs::SymmetricPairs(const RootCsr& s) {
+  const std::size_t n = s.size();
+  const std::size_t nnz = s.cols.size();
+  if (nnz >= std::numeric_limits<std::uint32_t>::max() ||
+      n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    return;
+  // Each row's (column, position) sorted by column: the rows of a gathered matrix are in the
+  // owners' local column order, not ascending.
+  std::vector<std::pair<long long, std::uint32_t>> sorted(nnz);
+  for (std::size_t k = 0; k < nnz; ++k)
+    sorted[k] = {s.cols[k], static_cast<std::uint32_t>(k)};
+  for (std::size_t r = 0; r < n; ++r)
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[r]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[r + 1]));
+  const auto find = [&](std::size_t row, long long col) -> std::int64_t {
+    const auto first = sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[row]);
+    const auto last = sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[row + 1]);
+    const auto it = std::lower_bound(first, last, std::make_pair(col, std::uint32_t(0)));
+    return it != last && it->first == col ? static_cast<std::int64_t>(it->second) : -1;
+  };
+  diagonal_.assign(n, -1);
+  for (std::size_t r = 0; r < n; ++r) {
+    diagonal_[r] = find(r, static_cast<long long>(r));
+    for (std::size_t k = s.row_ptr[r]; k < s.row_ptr[r + 1]; ++k) {
+      const long long c = s.cols[k];
+      if (c < 0 || static_cast<std::size_t>(c) >= n) return;
+      const std::int64_t t = find(static_cast<std::size_t>(c), static_cast<long long>(r));
+      if (t < 0) return; // not structurally symmetric: every matrix on it is unsymmetric
+      if (c > static_cast<long long>(r)) continue;
+      rows_.push_back(static_cast<int>(r));
+      cols_.push_back(static_cast<int>(c));
+      entry_.push_back(static_cast<std::uint32_t>(k));
+      transpose_.push_back(static_cast<std::uint32_t>(t));
+    }
+  }
+  usable_ = true;
+}
+
+bool SymmetricPairs::symmetric(const std::vector<double>& values, double tolerance) const {
+  if (!usable_) return false;
+  const auto diagonal = [&](int r) {
+    return diagonal_[r] < 0 ? 0.0 : std::abs(values[static_cast<std::size_t>(diagonal_[r])]);
+  };
+  for (std::size_t i = 0; i < entry_.size(); ++i) {
+    const double gap = std::abs(values[entry_[i]] - values[transpose_[i]]);
+    if (!(gap <= tolerance * std::max(diagonal(rows_[i]), diagonal(cols_[i])))) return false;
+  }
+  return true;
+}
+
+void SymmetricPairs::lower_values(const std::vector<double>& values,
+                                  std::vector<double>& out) const {
+  out.resize(entry_.size());
+  for (std::size_t i = 0; i < entry_.size(); ++i)
+    out[i] = 0.5 * (values[entry_[i]] + values[transpose_[i]]);
+}
+
+} // namespace bipot::detail
