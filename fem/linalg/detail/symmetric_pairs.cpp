@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 
 namespace bipot::detail {
 
@@ -13,19 +12,21 @@ SymmetricPairs::SymmetricPairs(const RootCsr& s) {
   if (nnz >= std::numeric_limits<std::uint32_t>::max() ||
       n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
     return;
-  // Each row's (column, position) sorted by column: the rows of a gathered matrix are in the
-  // owners' local column order, not ascending.
-  std::vector<std::pair<long long, std::uint32_t>> sorted(nnz);
+  // Each row's entry positions sorted by column: the rows of a gathered matrix are in the
+  // owners' local column order, not ascending. (Positions only: 4 bytes per entry.)
+  std::vector<std::uint32_t> sorted(nnz);
   for (std::size_t k = 0; k < nnz; ++k)
-    sorted[k] = {s.cols[k], static_cast<std::uint32_t>(k)};
+    sorted[k] = static_cast<std::uint32_t>(k);
+  const auto by_column = [&](std::uint32_t a, std::uint32_t b) { return s.cols[a] < s.cols[b]; };
   for (std::size_t r = 0; r < n; ++r)
     std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[r]),
-              sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[r + 1]));
+              sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[r + 1]), by_column);
   const auto find = [&](std::size_t row, long long col) -> std::int64_t {
     const auto first = sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[row]);
     const auto last = sorted.begin() + static_cast<std::ptrdiff_t>(s.row_ptr[row + 1]);
-    const auto it = std::lower_bound(first, last, std::make_pair(col, std::uint32_t(0)));
-    return it != last && it->first == col ? static_cast<std::int64_t>(it->second) : -1;
+    const auto it = std::lower_bound(first, last, col,
+                                     [&](std::uint32_t k, long long c) { return s.cols[k] < c; });
+    return it != last && s.cols[*it] == col ? static_cast<std::int64_t>(*it) : -1;
   };
   diagonal_.assign(n, -1);
   for (std::size_t r = 0; r < n; ++r) {
