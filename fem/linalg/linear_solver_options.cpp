@@ -43,9 +43,10 @@ ParamSchemaOf<LinearSolverOptions> LinearSolver::schema() {
       .at_least(1)
       .defaulted();
   s.string("factorization", &O::factorization,
-           "Sparse LU package for method `direct` and preconditioner `lu`, on the matrix "
-           "gathered on rank 0. mumps: multifrontal (MUMPS), analysis and factorisation 3 "
-           "times faster than klu2 at 78k DOFs and 10 times at 306k (docs/performance.md); "
+           "Sparse factorisation package for method `direct` and preconditioner `lu`, on the "
+           "matrix gathered on rank 0. mumps: multifrontal (MUMPS), LDL^T of a symmetric "
+           "matrix (without pivoting while positive definite), LU of any other; 3 times "
+           "faster than klu2 at 78k DOFs and 10 times at 306k (docs/performance.md); "
            "klu2: Amesos2's left-looking LU")
       .one_of({"mumps", "klu2"})
       .defaulted();
