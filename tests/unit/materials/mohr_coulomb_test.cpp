@@ -3,10 +3,13 @@
 #include "materials/mohr_coulomb.hpp"
 #include "point_driver.hpp"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <random>
 
 namespace bipot {
 namespace {
@@ -222,6 +225,44 @@ TEST(MohrCoulomb, ContinuousWhereThePileStalled) {
       EXPECT_LE(jump, bound * h + 1e-9) << "direction " << k << ", step " << h;
     }
   }
+}
+
+// return_stress() takes a trial as elastic from closed-form eigenvalues when it lies inside
+// by more than 1e-6 of the stresses, and decides nearer the surface on the exact
+// decomposition. Trials 1e-9 of the stresses outside must yield, and 1e-9 inside must not,
+// in any orientation and with two principal stresses nearly or exactly equal (where the
+// closed form is least accurate). The hydrostatic shift t moves every plane's f by exactly t
+// (each normal's components sum to 1.5 − 0.5 = 1), which places a trial at a chosen f.
+TEST(MohrCoulomb, TrialsJustOutsideYieldAndJustInsideDoNot) {
+  MohrCoulomb m({E, nu, c, phi, psi});
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int outside = 0, inside = 0;
+  for (int sample = 0; sample < 20000; ++sample) {
+    Vec3 s(-200 * u(gen), -200 * u(gen), -200 * u(gen));
+    std::sort(s.data(), s.data() + 3, std::greater<double>());
+    const double gap = std::pow(10.0, -16 + 14 * u(gen)) * 100;  // 1e-14 to 1 kPa
+    if (sample % 3 == 1) s(1) = s(0) - (sample % 2 ? gap : 0.0); // near the left edge
+    if (sample % 3 == 2) s(1) = s(2) + (sample % 2 ? gap : 0.0); // near the right edge
+    const double f = std::max({f1(s), f2(s), f3(s)});
+    const double scale = s.cwiseAbs().maxCoeff() + k;
+    const bool out = sample % 2 == 0;
+    const Vec3 trial = s + Vec3::Constant((out ? 1e-9 : -1e-9) * scale - f);
+    const Mat3 Q = Eigen::Quaterniond(u(gen) - 0.5, u(gen) - 0.5, u(gen) - 0.5, u(gen) - 0.5)
+                       .normalized()
+                       .toRotationMatrix();
+    const Mat3 T = Q * trial.asDiagonal() * Q.transpose();
+    const int branch = m.return_stress(T, 0.0).branch;
+    if (out) {
+      EXPECT_NE(branch, 0) << "trial " << trial.transpose() << " is outside by 1e-9";
+      ++outside;
+    } else {
+      EXPECT_EQ(branch, 0) << "trial " << trial.transpose() << " is inside by 1e-9";
+      ++inside;
+    }
+    if (HasFailure()) break;
+  }
+  EXPECT_EQ(outside + inside, 20000);
 }
 
 // With a huge cohesion nothing yields: stress and tangent equal linear_elastic's.
