@@ -14,12 +14,16 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace bipot::detail {
 
 namespace {
+
+static_assert(std::is_same<MUMPS_INT, int>::value,
+              "SymmetricPairs' lower triangle is handed to MUMPS as it is");
 
 /// Asymmetry, relative to the rows' diagonals, up to which a matrix is factorised as
 /// symmetric: a few hundred times the round-off of the element products that make an
@@ -58,12 +62,12 @@ public:
   /// The structure: n rows, `nnz` entries at 1-based (rows1[k], cols1[k]) (a symmetric
   /// kind: one triangle). The arrays are the caller's and must outlive the instance: MUMPS
   /// reads them again at every factorisation.
-  void analyse(std::size_t n, std::size_t nnz, MUMPS_INT* rows1, MUMPS_INT* cols1) {
+  void analyse(std::size_t n, std::size_t nnz, const MUMPS_INT* rows1, const MUMPS_INT* cols1) {
     values_.assign(nnz, 0.0);
     id_.n = static_cast<MUMPS_INT>(n);
     id_.nnz = static_cast<MUMPS_INT8>(nnz);
-    id_.irn = rows1;
-    id_.jcn = cols1;
+    id_.irn = const_cast<MUMPS_INT*>(rows1); // MUMPS only reads them
+    id_.jcn = const_cast<MUMPS_INT*>(cols1);
     id_.a = values_.data();
     call(1);
   }
@@ -131,11 +135,9 @@ public:
         rows1_[k] = static_cast<MUMPS_INT>(r + 1); // MUMPS counts from 1
         cols1_[k] = static_cast<MUMPS_INT>(s.cols[k] + 1);
       }
-    pairs_ = std::make_unique<SymmetricPairs>(s);
+    pairs_ = std::make_unique<SymmetricPairs>(s, 1); // MUMPS counts from 1
     kind_ = pairs_->usable() ? Kind::positive_definite : Kind::general;
     if (kind_ == Kind::general) pairs_.reset();
-    lower_rows1_.clear();
-    lower_cols1_.clear();
   }
 
   void factorize(const std::vector<double>& values) override {
@@ -171,36 +173,24 @@ private:
   void move_to(Kind kind) {
     kind_ = kind;
     instance_.reset(); // frees the other kind's factors
-    if (kind != Kind::general) return;
-    pairs_.reset();
-    std::vector<MUMPS_INT>().swap(lower_rows1_);
-    std::vector<MUMPS_INT>().swap(lower_cols1_);
+    if (kind == Kind::general) pairs_.reset();
   }
 
   /// A new instance of the current kind, analysed; instance_ is left as it was if that throws.
   void start() {
     auto instance = std::make_unique<MumpsInstance>(kind_, factor_directory_);
-    if (kind_ == Kind::general) {
-      instance->analyse(n_, rows1_.size(), rows1_.data(), cols1_.data());
-    } else {
-      lower_rows1_.clear();
-      lower_cols1_.clear();
-      for (int r : pairs_->lower_rows())
-        lower_rows1_.push_back(static_cast<MUMPS_INT>(r + 1));
-      for (int c : pairs_->lower_cols())
-        lower_cols1_.push_back(static_cast<MUMPS_INT>(c + 1));
-      instance->analyse(n_, lower_rows1_.size(), lower_rows1_.data(), lower_cols1_.data());
-    }
+    const std::vector<MUMPS_INT>& rows = kind_ == Kind::general ? rows1_ : pairs_->lower_rows();
+    const std::vector<MUMPS_INT>& cols = kind_ == Kind::general ? cols1_ : pairs_->lower_cols();
+    instance->analyse(n_, rows.size(), rows.data(), cols.data());
     instance_ = std::move(instance);
   }
 
   std::string factor_directory_;
   std::size_t n_ = 0;
-  std::vector<MUMPS_INT> rows1_, cols1_;             ///< the whole structure, 1-based
-  std::unique_ptr<SymmetricPairs> pairs_;            ///< while the kind is symmetric
-  std::vector<MUMPS_INT> lower_rows1_, lower_cols1_; ///< its lower triangle, 1-based
+  std::vector<MUMPS_INT> rows1_, cols1_;  ///< the whole structure, 1-based
+  std::unique_ptr<SymmetricPairs> pairs_; ///< while the kind is symmetric (MUMPS reads it)
   Kind kind_ = Kind::general;
-  std::unique_ptr<MumpsInstance> instance_;
+  std::unique_ptr<MumpsInstance> instance_; ///< last: freed before the arrays it reads
 };
 
 } // namespace

@@ -6,7 +6,7 @@
 
 namespace bipot::detail {
 
-SymmetricPairs::SymmetricPairs(const RootCsr& s) {
+SymmetricPairs::SymmetricPairs(const RootCsr& s, int index_base) : base_(index_base) {
   const std::size_t n = s.size();
   const std::size_t nnz = s.cols.size();
   if (nnz >= std::numeric_limits<std::uint32_t>::max() ||
@@ -37,8 +37,8 @@ SymmetricPairs::SymmetricPairs(const RootCsr& s) {
       const std::int64_t t = find(static_cast<std::size_t>(c), static_cast<long long>(r));
       if (t < 0) return; // not structurally symmetric: every matrix on it is unsymmetric
       if (c > static_cast<long long>(r)) continue;
-      rows_.push_back(static_cast<int>(r));
-      cols_.push_back(static_cast<int>(c));
+      rows_.push_back(static_cast<int>(r) + base_);
+      cols_.push_back(static_cast<int>(c) + base_);
       entry_.push_back(static_cast<std::uint32_t>(k));
       transpose_.push_back(static_cast<std::uint32_t>(t));
     }
@@ -49,7 +49,8 @@ SymmetricPairs::SymmetricPairs(const RootCsr& s) {
 bool SymmetricPairs::symmetric(const std::vector<double>& values, double tolerance) const {
   if (!usable_) return false;
   const auto diagonal = [&](int r) {
-    return diagonal_[r] < 0 ? 0.0 : std::abs(values[static_cast<std::size_t>(diagonal_[r])]);
+    const std::int64_t d = diagonal_[r - base_];
+    return d < 0 ? 0.0 : std::abs(values[static_cast<std::size_t>(d)]);
   };
   for (std::size_t i = 0; i < entry_.size(); ++i) {
     const double gap = std::abs(values[entry_[i]] - values[transpose_[i]]);

@@ -16,11 +16,13 @@ namespace bipot::detail {
 class SymmetricPairs {
 public:
   /// Pairs every entry (r, c) of `structure` with (c, r). usable() is false if some entry
-  /// has no transpose, or if the matrix is too large for 32-bit entry positions.
-  explicit SymmetricPairs(const RootCsr& structure);
+  /// has no transpose, or if the matrix is too large for 32-bit entry positions. The lower
+  /// triangle's indices count from `index_base` (1 for MUMPS, which then reads them as they
+  /// are).
+  explicit SymmetricPairs(const RootCsr& structure, int index_base = 0);
 
   bool usable() const { return usable_; }
-  /// The lower triangle (r ≥ c), 0-based, in the order of lower_values().
+  /// The lower triangle (r ≥ c), from index_base, in the order of lower_values().
   const std::vector<int>& lower_rows() const { return rows_; }
   const std::vector<int>& lower_cols() const { return cols_; }
 
@@ -33,6 +35,7 @@ public:
 
 private:
   bool usable_ = false;
+  int base_ = 0;
   std::vector<int> rows_, cols_;
   std::vector<std::uint32_t> entry_, transpose_; ///< positions of (r, c) and (c, r)
   std::vector<std::int64_t> diagonal_;           ///< position of (r, r) per row, or -1
