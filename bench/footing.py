@@ -17,6 +17,7 @@ constraints, GetFEM's Newton and how its stopping test is made to match bipot's.
 then puts both codes side by side (Newton iterations = linear solves per increment).
 
 Usage: bench/footing.py [--bipot build/apps/bipot/bipot] [--cells 12,38] [--increments 20]
+       [--cell tri6|quad8]
        [--getfem [--getfem-lsearch default|basic|...] [--getfem-extrapolate]
         [--getfem-norm2-bound] [--getfem-history] [--tolerance 1e-8]]
 Prints a Markdown table for docs/performance_plasticity.md.
@@ -35,15 +36,16 @@ SETTLEMENT = 0.05
 YOUNG, POISSON = 1.0e4, 0.3
 
 
-def footing_input(k, increments, directory, settlement=SETTLEMENT, vtk=False):
-    """The footing with k cells under the half footing (the test has k = 8)."""
+def footing_input(k, increments, directory, settlement=SETTLEMENT, vtk=False, cell="tri6"):
+    """The footing with k cells under the half footing (the test has k = 8); `cell` tri6 (each
+    quadrilateral cut in two, the diagonals alternating) or quad8."""
     n = lambda base: max(1, round(base * k / 8))
     c = 10.0
+    cells = "cell: tri6\n    diagonals: alternating" if cell == "tri6" else f"cell: {cell}"
     return f"""kinematics: plane_strain
 mesh:
   blocks:
-    cell: tri6
-    diagonals: alternating
+    {cells}
     x: {{breaks: [0.0, 0.5, 1.0, 2.0, 3.5], cells: [{n(8)}, {n(8)}, {n(8)}, {n(4)}], grading: [1.0, 1.0, {1.15 ** (8 / k):.6f}, {1.2 ** (8 / k):.6f}]}}
     y: {{breaks: [0.0, 1.5, 2.5], cells: [{n(4)}, {n(16)}], grading: [{0.85 ** (8 / k):.6f}, 1.0]}}
     regions: [soil, soil, soil, soil, soil, soil, soil, soil]
@@ -75,9 +77,9 @@ def run_bipot(bipot, text, path):
     return out.stdout + out.stderr
 
 
-def run(bipot, k, increments, workdir):
+def run(bipot, k, increments, workdir, cell="tri6"):
     out_dir = os.path.join(workdir, f"footing_{k}")
-    text, c = footing_input(k, increments, out_dir)
+    text, c = footing_input(k, increments, out_dir, cell=cell)
     text = run_bipot(bipot, text, os.path.join(workdir, f"footing_{k}.yaml"))
     newton = [int(m.group(1)) for m in re.finditer(r"newton\s+(\d+)", text)]
     cut = re.search(r"(\d+) cut-backs?\b", text)
@@ -108,6 +110,8 @@ def main():
     p.add_argument("--bipot", default=os.path.join(ROOT, "build", "apps", "bipot", "bipot"))
     p.add_argument("--cells", default="12,38")
     p.add_argument("--increments", type=int, default=20)
+    p.add_argument("--cell", default="tri6", choices=["tri6", "quad8"],
+                   help="bipot's cells (quad8: 3x3 Gauss points; GetFEM takes tri6 only)")
     p.add_argument("--getfem", action="store_true",
                    help="also solve each size with GetFEM on bipot's mesh (footing_getfem.py)")
     p.add_argument("--getfem-lsearch", default="default",
@@ -122,6 +126,8 @@ def main():
     p.add_argument("--tolerance", type=float, default=1e-8,
                    help="GetFEM's tolerance (bipot uses its default, 1e-8)")
     a = p.parse_args()
+    if a.getfem and a.cell != "tri6":
+        p.error("--getfem reads bipot's mesh as tri6: leave --cell at tri6")
     if a.getfem:
         from frictional_block import reexec_with_system_python
         reexec_with_system_python(alternative="")
@@ -131,7 +137,7 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for k in [int(x) for x in a.cells.split(",")]:
-            r = run(a.bipot, k, a.increments, work)
+            r = run(a.bipot, k, a.increments, work, a.cell)
             print(f"| {k} | {r['dofs']} | {r['increments']} | {r['newton']} "
                   f"({r['newton'] / r['increments']:.2f}) | {r['cutbacks']} | "
                   f"{r['seconds']:.1f} s | {r['assembly']:.1f} s | {r['setup']:.1f} s | "
